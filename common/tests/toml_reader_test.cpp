@@ -1,0 +1,82 @@
+#include "lituya/common/toml_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "lituya/common/input_error.hpp"
+
+namespace {
+
+std::filesystem::path write_file(const std::string& name, const std::string& text) {
+  auto path = std::filesystem::temp_directory_path() / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// Runs `f` and returns the InputError message (empty if none was thrown).
+template <class F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const lituya::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(TomlReader, ReadsTypedValuesAndRanges) {
+  auto path = write_file("lituya_toml_ok.toml",
+                         "format = \"x\"\nversion = 1\nn = 3\nd = 2.5\ns = \"a\"\nv = [1, 2.0]\n");
+  lituya::TomlDocument doc(path);
+  auto root = doc.root();
+  EXPECT_EQ(lituya::TomlDocument::check_header(root, "x", 1), 1);
+  EXPECT_DOUBLE_EQ(root.number("n"), 3.0);  // an integer is accepted as a number
+  EXPECT_DOUBLE_EQ(root.number_in("d", 0, 10), 2.5);
+  EXPECT_EQ(root.string("s"), "a");
+  EXPECT_EQ(root.numbers("v"), (std::vector<double>{1.0, 2.0}));
+  EXPECT_DOUBLE_EQ(root.number_or("missing", 7.0), 7.0);
+  root.finish();
+}
+
+TEST(TomlReader, UnknownKeyNamesFileAndLine) {
+  auto path = write_file("lituya_toml_unknown.toml", "a = 1\n\nfrction_angle = 30\n");
+  lituya::TomlDocument doc(path);
+  auto root = doc.root();
+  root.number("a");
+  std::string msg = error_of([&] { root.finish(); });
+  EXPECT_NE(msg.find("lituya_toml_unknown.toml:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("frction_angle"), std::string::npos) << msg;
+}
+
+TEST(TomlReader, WrongTypeAndRangeAndSyntax) {
+  auto path = write_file("lituya_toml_bad.toml", "a = \"ten\"\nb = 2.0\n");
+  lituya::TomlDocument doc(path);
+  auto root = doc.root();
+  std::string msg = error_of([&] { root.number("a"); });
+  EXPECT_NE(msg.find(":1"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("must be a number"), std::string::npos) << msg;
+  msg = error_of([&] { root.number_in("b", 0.0, 1.0); });
+  EXPECT_NE(msg.find(":2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("outside the allowed range"), std::string::npos) << msg;
+  msg = error_of([&] { root.number("c"); });
+  EXPECT_NE(msg.find("missing required key 'c'"), std::string::npos) << msg;
+
+  auto syntax = write_file("lituya_toml_syntax.toml", "a = 1\nb = = 2\n");
+  msg = error_of([&] { lituya::TomlDocument d(syntax); });
+  EXPECT_NE(msg.find("lituya_toml_syntax.toml:2"), std::string::npos) << msg;
+  msg = error_of([&] { lituya::TomlDocument d("/nonexistent/lituya.toml"); });
+  EXPECT_NE(msg.find("cannot open"), std::string::npos) << msg;
+}
+
+TEST(TomlReader, HeaderFormatAndVersionChecked) {
+  auto path = write_file("lituya_toml_header.toml", "format = \"lituya-scene\"\nversion = 9\n");
+  lituya::TomlDocument doc(path);
+  std::string msg = error_of([&] { lituya::TomlDocument::check_header(doc.root(), "lituya-scene", 1); });
+  EXPECT_NE(msg.find("version 9 is not supported"), std::string::npos) << msg;
+  msg = error_of([&] { lituya::TomlDocument::check_header(doc.root(), "lituya-stages", 1); });
+  EXPECT_NE(msg.find("expected \"lituya-stages\""), std::string::npos) << msg;
+}
+
+}  // namespace

@@ -1,0 +1,41 @@
+#pragma once
+// Boundary conditions on nodal velocities, applied after every grid update: fixities (no
+// slip or selected global components), rollers (zero normal velocity on a wall of any
+// inclination) and Coulomb contact with a rigid wall (no penetration, separation allowed,
+// tangential velocity reduced by mu times the normal velocity jump; the nodal form of
+// Coulomb friction, so a block on an incline accelerates at g (sin(theta) - mu cos(theta))).
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "lituya/solver/case_description.hpp"
+#include "lituya/solver/mesh.hpp"
+
+namespace lituya::solver {
+
+template <int dim>
+struct NodalConstraint {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  BoundaryType type = BoundaryType::kFixed;
+  double friction = 0;
+  std::vector<int> directions;  // fixity
+  std::vector<int> nodes;
+  std::vector<Vec> normal;      // per node: unit outward normal of the group's facets
+};
+
+// Builds the node set and outward normals of one boundary condition from its group's facets.
+// Throws InputError (naming `file`) if the group has no facets or a contact boundary lies
+// inside the mesh.
+template <int dim>
+NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
+                                     const std::vector<std::array<int, dim>>& facets,
+                                     const Mesh<dim>& mesh, const std::string& file);
+
+// Applies the active constraints to nodal velocities (twice over, so that a node on two
+// non-orthogonal walls satisfies both).
+template <int dim>
+void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
+                       std::vector<Eigen::Matrix<double, dim, 1>>& velocity);
+
+}  // namespace lituya::solver

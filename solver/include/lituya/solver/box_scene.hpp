@@ -1,0 +1,57 @@
+#pragma once
+// A scene built in code instead of from gmsh files: a structured box mesh, a block of
+// material points and boundary conditions on the box sides. Used by unit tests and the
+// benchmark, where the physics must be checked (or timed) without the preprocessor.
+#include <string>
+#include <vector>
+
+#include "lituya/solver/simulation.hpp"
+
+namespace lituya::solver {
+
+template <int dim>
+struct BoxScene {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  Vec domain_origin = Vec::Zero();
+  Vec domain_size = Vec::Ones();
+  std::array<int, dim> cells{};
+  Vec block_min = Vec::Zero();  // cells whose centroid lies in [block_min, block_max] get points
+  Vec block_max = Vec::Ones();
+  int points_per_cell = 4;     // 1 or 4 (2D: sub-triangle centroids; 3D: Gauss points)
+  Material material;
+  std::vector<double> gravity;  // dim components
+  // Boundary conditions on box sides: side is "x-", "x+", "y-", "y+", "z-" or "z+"; the
+  // condition's `group` is set to the side name.
+  std::vector<std::pair<std::string, BoundaryCondition>> boundaries;
+  SolverSettings solver;
+  // Vertical (y) geostatic stress sigma_yy = -rho g (y_top - y), sigma_xx = sigma_zz = k0
+  // sigma_yy when k0 >= 0 (g = |gravity|, y_top = block_max.y); zero stress when k0 < 0.
+  double k0 = -1;
+};
+
+template <int dim>
+Simulation<dim> make_box_simulation(const BoxScene<dim>& scene);
+
+// Boundary facets (faces with no neighbour) whose nodes all satisfy `on_side`.
+template <int dim, class Predicate>
+std::vector<std::array<int, dim>> boundary_facets(const Mesh<dim>& mesh, Predicate on_side) {
+  std::vector<std::array<int, dim>> facets;
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c)
+    for (int i = 0; i <= dim; ++i) {
+      if (mesh.cell_neighbour[c][i] >= 0) continue;
+      std::array<int, dim> f;
+      bool all = true;
+      for (int k = 0, j = 0; k <= dim; ++k)
+        if (k != i) {
+          f[j++] = mesh.cell_nodes[c][k];
+          all = all && on_side(mesh.node_position[mesh.cell_nodes[c][k]]);
+        }
+      if (all) facets.push_back(f);
+    }
+  return facets;
+}
+
+extern template Simulation<2> make_box_simulation<2>(const BoxScene<2>&);
+extern template Simulation<3> make_box_simulation<3>(const BoxScene<3>&);
+
+}  // namespace lituya::solver

@@ -1,0 +1,116 @@
+#pragma once
+// What a case is made of, as read from materials.toml and stages.toml (and, by the
+// preprocessor, from the matching tables of scene.toml). The readers validate every value and
+// name the file and line of anything wrong; the writers produce the tables the solver reads,
+// so a scene and a case folder share one definition of each key.
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "lituya/common/toml_reader.hpp"
+
+namespace lituya::solver {
+
+enum class MaterialModel { kLinearElastic, kMohrCoulomb };
+
+struct Material {
+  std::string name;
+  MaterialModel model = MaterialModel::kMohrCoulomb;
+  double solid_density = 0;    // kg/m3, intrinsic grain density rho_s, eq. (1)
+  double porosity = 0;         // initial porosity n0
+  double youngs_modulus = 0;   // Pa
+  double poisson_ratio = 0;    // -
+  double friction_angle = 0;   // deg
+  double dilatancy_angle = 0;  // deg
+  double cohesion = 0;         // Pa
+  double tensile_strength = 0; // Pa (apex value c cot(phi) when not given)
+  double grain_diameter = 0;   // m, D_p in eq. (24); 0 = not given
+
+  // Dry bulk density (1 - n0) rho_s: the apparent solid density of eq. (1).
+  double dry_density() const { return (1.0 - porosity) * solid_density; }
+};
+
+enum class BoundaryType { kFixed, kRoller, kContact, kFixity };
+
+struct BoundaryCondition {
+  std::string name;
+  std::string group;
+  BoundaryType type = BoundaryType::kFixed;
+  double friction = 0;          // contact only
+  std::vector<int> directions;  // fixity only: 0 = x, 1 = y, 2 = z
+};
+
+enum class StageType { kQuasiStatic, kDynamic };
+
+struct Stage {
+  std::string name;
+  StageType type = StageType::kDynamic;
+  double duration = 0;
+  double courant = 0.5;
+  double damping = 0;
+  double output_interval = 0;
+  std::vector<std::string> boundaries;
+  double kinetic_energy_ratio = 0;  // quasi-static stop criterion; 0 = run the full duration
+  bool reset_displacement = true;
+};
+
+enum class TransferScheme { kMUSL, kUSL };
+
+struct SolverSettings {
+  TransferScheme scheme = TransferScheme::kMUSL;
+  double flip_fraction = 0.99;
+  double max_velocity = 100.0;
+};
+
+struct OutputSettings {
+  std::vector<std::string> point_fields = {"displacement", "velocity", "stress", "plastic_strain",
+                                           "material",     "mass",     "volume"};
+  bool grid = true;
+};
+
+struct Group {
+  std::string name;
+  int dimension = 0;
+};
+
+// Readers: validate one table (a [[material]], [[boundary]], [[stage]], [solver], [output]).
+// `dimension` is needed to check direction names and vector lengths.
+Material read_material(const TomlTable& t);
+BoundaryCondition read_boundary(const TomlTable& t, int dimension);
+Stage read_stage(const TomlTable& t);
+SolverSettings read_solver_settings(const TomlTable& t);
+OutputSettings read_output_settings(const TomlTable& t);
+
+// Writers: the same keys, for materials.toml / stages.toml.
+toml::table to_toml(const Material& m);
+toml::table to_toml(const BoundaryCondition& b);
+toml::table to_toml(const Stage& s);
+toml::table to_toml(const SolverSettings& s);
+toml::table to_toml(const OutputSettings& o);
+
+// The whole case folder as the solver sees it (everything but the mesh and points).
+struct CaseDescription {
+  std::string folder;           // the case folder
+  int dimension = 2;
+  std::vector<double> gravity;  // `dimension` components
+  std::string geometry_file, points_file, materials_file;
+  std::vector<Group> groups;
+  std::vector<Material> materials;
+  std::vector<BoundaryCondition> boundaries;
+  std::vector<Stage> stages;
+  SolverSettings solver;
+  OutputSettings output;
+};
+
+// Reads case/stages.toml and case/materials.toml; checks cross references (stage boundaries
+// exist, boundary groups exist and have dimension - 1, ...).
+CaseDescription read_case(const std::string& case_folder);
+
+// Cross checks shared by the scene reader and read_case: stage boundary names exist, names are
+// unique. `where` is used in messages.
+void check_stage_boundaries(const std::vector<Stage>& stages,
+                            const std::vector<BoundaryCondition>& boundaries,
+                            const std::vector<TomlTable>& stage_tables);
+
+}  // namespace lituya::solver

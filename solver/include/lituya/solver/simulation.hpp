@@ -1,0 +1,129 @@
+#pragma once
+// The explicit MPM time loop for the solid phase (dry granular flows), eqs. (11) and (19)-(22)
+// of the reference paper with n and the water terms absent: momentum balance on the nodes of
+// the background mesh, stress update at the material points.
+//
+// One step (MUSL, Sulsky et al. 1994; USL skips step 4):
+//   1. points -> nodes: mass, momentum, internal force -V sigma . grad N, gravity m g;
+//   2. nodes: local damping, velocity update, boundary conditions;
+//   3. nodes -> points: velocity (FLIP/PIC blend), position, displacement;
+//   4. points -> nodes again: momentum of the updated point velocities, boundary conditions;
+//   5. points: strain and spin increments from the nodal velocities, Jaumann-rotated stress,
+//      constitutive update, volume update, relocation in the mesh, stability checks.
+#include <functional>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "lituya/solver/boundary_conditions.hpp"
+#include "lituya/solver/case_description.hpp"
+#include "lituya/solver/material_points.hpp"
+#include "lituya/solver/mesh.hpp"
+#include "lituya/solver/mohr_coulomb.hpp"
+
+namespace lituya::solver {
+
+struct StageReport {
+  std::string stage;
+  long steps = 0;
+  double simulated_time = 0;        // s
+  double wall_time = 0;             // s
+  double point_steps_per_second = 0;
+  std::size_t peak_memory = 0;      // bytes (process peak resident set)
+  std::string stop_reason;          // "duration reached", "kinetic energy ratio below ..."
+};
+
+// Called at each output time of a stage: (stage, stage time, output index).
+using OutputCallback = std::function<void(const Stage&, double, int)>;
+
+template <int dim>
+class Simulation {
+ public:
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  using Shape = typename Mesh<dim>::Shape;
+
+  // `constraints[i]` belongs to `description.boundaries[i]`. Points must lie in the mesh
+  // (their `cell` is a valid starting cell or -1).
+  Simulation(CaseDescription description, Mesh<dim> mesh, MaterialPoints<dim> points,
+             std::vector<NodalConstraint<dim>> constraints);
+
+  void set_threads(int threads);
+  int threads() const { return threads_; }
+  // Where the progress line goes (nullptr: silent).
+  void set_progress_stream(std::ostream* stream) { progress_ = stream; }
+
+  StageReport run_stage(const Stage& stage, const OutputCallback& on_output);
+
+  // Activates the named boundary conditions (a stage's list).
+  void activate_boundaries(const std::vector<std::string>& names);
+  // Largest stable time step for the given Courant number: min over points of
+  // courant * h_cell / (c_p + |v_p|), c_p the P-wave speed of the point's material.
+  double stable_time_step(double courant) const;
+  // One explicit step of length dt with local damping coefficient `damping`.
+  void step(double dt, double damping);
+  // Fills nodal mass and velocity from the points (for grid output).
+  void map_to_grid();
+
+  double kinetic_energy() const;
+  long step_count() const { return step_count_; }
+  const Mesh<dim>& mesh() const { return mesh_; }
+  const MaterialPoints<dim>& points() const { return points_; }
+  MaterialPoints<dim>& points() { return points_; }
+  const CaseDescription& description() const { return description_; }
+  const std::vector<double>& node_mass() const { return grid_.mass; }
+  const std::vector<Vec>& node_velocity() const { return node_velocity_; }
+  // Bytes held by points, nodes and mesh (for the memory-per-point report).
+  std::size_t storage_bytes() const;
+
+ private:
+  struct NodalBuffer {
+    std::vector<double> mass;
+    std::vector<Vec> momentum;
+    std::vector<Vec> force;
+  };
+  enum class Transfer { kMassMomentumForce, kMomentum };
+  struct MaterialModelData {
+    MaterialModel model;
+    ElasticConstants elastic;
+    std::unique_ptr<MohrCoulomb> mohr_coulomb;
+    double wave_speed;  // sqrt((lambda + 2G) / rho_dry)
+  };
+
+  void points_to_nodes(Transfer what);
+  void nodal_update(double dt, double damping);
+  void nodes_to_points(double dt);
+  void remap_momentum();
+  void update_stress_and_relocate(double dt);
+  void report_progress(const Stage& stage, double t, double wall, bool final_line);
+
+  CaseDescription description_;
+  Mesh<dim> mesh_;
+  MaterialPoints<dim> points_;
+  std::vector<Shape> shape_;  // shape values of each point in its cell
+  std::vector<NodalConstraint<dim>> constraints_;
+  std::vector<const NodalConstraint<dim>*> active_constraints_;
+  std::vector<MaterialModelData> materials_;
+  Vec gravity_;
+  int threads_ = 1;
+  NodalBuffer grid_;
+  std::vector<NodalBuffer> thread_buffers_;  // threads 1..T-1
+  std::vector<Vec> node_velocity_;
+  std::vector<Vec> node_acceleration_;
+  double flip_fraction_;
+  bool musl_;
+  double max_velocity_;
+  long step_count_ = 0;
+  double next_time_step_ = 0;  // stable dt from the last stress update (for courant 1)
+  std::ostream* progress_ = nullptr;
+  double last_progress_wall_ = -1e9;
+  long stage_steps_ = 0;
+  double last_dt_ = 0;
+};
+
+extern template class Simulation<2>;
+extern template class Simulation<3>;
+
+}  // namespace lituya::solver

@@ -1,0 +1,130 @@
+#include "lituya/solver/boundary_conditions.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <unordered_map>
+
+#include "lituya/common/input_error.hpp"
+
+namespace lituya::solver {
+
+namespace {
+// Unnormalised facet normal (its length is the facet's length or area).
+Eigen::Vector2d facet_normal(const Mesh<2>& mesh, const std::array<int, 2>& f) {
+  const Eigen::Vector2d edge = mesh.node_position[f[1]] - mesh.node_position[f[0]];
+  return Eigen::Vector2d(edge.y(), -edge.x());
+}
+Eigen::Vector3d facet_normal(const Mesh<3>& mesh, const std::array<int, 3>& f) {
+  const Eigen::Vector3d a = mesh.node_position[f[1]] - mesh.node_position[f[0]];
+  const Eigen::Vector3d b = mesh.node_position[f[2]] - mesh.node_position[f[0]];
+  return 0.5 * a.cross(b);
+}
+}  // namespace
+
+template <int dim>
+NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
+                                     const std::vector<std::array<int, dim>>& facets,
+                                     const Mesh<dim>& mesh, const std::string& file) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  NodalConstraint<dim> constraint;
+  constraint.type = bc.type;
+  constraint.friction = bc.friction;
+  constraint.directions = bc.directions;
+  if (facets.empty())
+    throw InputError(file, 0, "boundary '" + bc.name + "': its group '" + bc.group +
+                                  "' has no facets in the mesh");
+  // Cells around each node, to find the cells adjacent to a facet.
+  std::vector<std::vector<int>> cells_of_node(mesh.node_count());
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c)
+    for (int n : mesh.cell_nodes[c]) cells_of_node[n].push_back(static_cast<int>(c));
+
+  std::unordered_map<int, Vec> normal_sum;
+  std::vector<int> order;
+  for (const auto& facet : facets) {
+    Vec normal = facet_normal(mesh, facet);
+    std::vector<int> adjacent;
+    for (int c : cells_of_node[facet[0]]) {
+      bool has_all = true;
+      for (int n : facet)
+        has_all = has_all && std::find(mesh.cell_nodes[c].begin(), mesh.cell_nodes[c].end(),
+                                       n) != mesh.cell_nodes[c].end();
+      if (has_all) adjacent.push_back(c);
+    }
+    if (adjacent.empty())
+      throw InputError(file, 0, "boundary '" + bc.name + "': a facet of group '" + bc.group +
+                                    "' is not a face of any background cell");
+    if (adjacent.size() > 1 && bc.type == BoundaryType::kContact)
+      throw InputError(file, 0,
+                       "boundary '" + bc.name + "' (contact) lies inside the mesh, where there "
+                       "is no outside to point its normal to: use type \"roller\" or \"fixed\"");
+    // Orient the normal away from the (first) adjacent cell's centroid: outward.
+    Vec centroid = Vec::Zero();
+    for (int n : mesh.cell_nodes[adjacent[0]]) centroid += mesh.node_position[n];
+    centroid /= dim + 1;
+    if (normal.dot(mesh.node_position[facet[0]] - centroid) < 0) normal = -normal;
+    for (int n : facet) {
+      auto [it, inserted] = normal_sum.try_emplace(n, Vec::Zero());
+      if (inserted) order.push_back(n);
+      it->second += normal;
+    }
+  }
+  std::sort(order.begin(), order.end());
+  for (int n : order) {
+    constraint.nodes.push_back(n);
+    constraint.normal.push_back(normal_sum[n].normalized());
+  }
+  return constraint;
+}
+
+template <int dim>
+void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
+                       std::vector<Eigen::Matrix<double, dim, 1>>& velocity) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (const NodalConstraint<dim>* c : active) {
+      const std::size_t n_nodes = c->nodes.size();
+      switch (c->type) {
+        case BoundaryType::kFixed:
+          for (std::size_t k = 0; k < n_nodes; ++k) velocity[c->nodes[k]].setZero();
+          break;
+        case BoundaryType::kFixity:
+          for (std::size_t k = 0; k < n_nodes; ++k)
+            for (int d : c->directions) velocity[c->nodes[k]](d) = 0.0;
+          break;
+        case BoundaryType::kRoller:
+          for (std::size_t k = 0; k < n_nodes; ++k) {
+            Vec& v = velocity[c->nodes[k]];
+            v -= v.dot(c->normal[k]) * c->normal[k];
+          }
+          break;
+        case BoundaryType::kContact:
+          for (std::size_t k = 0; k < n_nodes; ++k) {
+            Vec& v = velocity[c->nodes[k]];
+            const Vec& n = c->normal[k];
+            const double approach = v.dot(n);
+            if (approach <= 0) continue;  // separating: the wall does not pull
+            Vec tangential = v - approach * n;
+            const double slip = tangential.norm();
+            // Coulomb: the tangential impulse is at most mu times the normal impulse, which
+            // is m * approach; stick if that is enough to stop the slip.
+            const double reduction = c->friction * approach;
+            v = slip > reduction ? Vec(tangential * (1.0 - reduction / slip)) : Vec::Zero();
+          }
+          break;
+      }
+    }
+  }
+}
+
+template NodalConstraint<2> make_constraint<2>(const BoundaryCondition&,
+                                               const std::vector<std::array<int, 2>>&,
+                                               const Mesh<2>&, const std::string&);
+template NodalConstraint<3> make_constraint<3>(const BoundaryCondition&,
+                                               const std::vector<std::array<int, 3>>&,
+                                               const Mesh<3>&, const std::string&);
+template void apply_constraints<2>(const std::vector<const NodalConstraint<2>*>&,
+                                   std::vector<Eigen::Vector2d>&);
+template void apply_constraints<3>(const std::vector<const NodalConstraint<3>*>&,
+                                   std::vector<Eigen::Vector3d>&);
+
+}  // namespace lituya::solver

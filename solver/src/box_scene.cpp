@@ -1,0 +1,89 @@
+#include "lituya/solver/box_scene.hpp"
+
+#include <cmath>
+
+namespace lituya::solver {
+
+namespace {
+// Points of the standard patterns in barycentric coordinates (equal volumes).
+template <int dim>
+std::vector<Eigen::Matrix<double, dim + 1, 1>> pattern(int points_per_cell) {
+  std::vector<Eigen::Matrix<double, dim + 1, 1>> out;
+  if (points_per_cell == 1) {
+    out.push_back(Eigen::Matrix<double, dim + 1, 1>::Constant(1.0 / (dim + 1)));
+  } else if constexpr (dim == 2) {
+    // Centroids of the 4 sub-triangles of the midpoint subdivision.
+    out.push_back({4.0 / 6, 1.0 / 6, 1.0 / 6});
+    out.push_back({1.0 / 6, 4.0 / 6, 1.0 / 6});
+    out.push_back({1.0 / 6, 1.0 / 6, 4.0 / 6});
+    out.push_back({1.0 / 3, 1.0 / 3, 1.0 / 3});
+  } else {
+    const double a = 0.5854101966249685, b = 0.1381966011250105;
+    for (int k = 0; k < 4; ++k) {
+      Eigen::Vector4d l = Eigen::Vector4d::Constant(b);
+      l(k) = a;
+      out.push_back(l);
+    }
+  }
+  return out;
+}
+}  // namespace
+
+template <int dim>
+Simulation<dim> make_box_simulation(const BoxScene<dim>& scene) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  Mesh<dim> mesh = make_box_mesh<dim>(scene.domain_origin, scene.domain_size, scene.cells);
+  CaseDescription description;
+  description.dimension = dim;
+  description.gravity = scene.gravity;
+  description.materials = {scene.material};
+  description.solver = scene.solver;
+  std::vector<NodalConstraint<dim>> constraints;
+  const double tolerance = 1e-9 * scene.domain_size.maxCoeff();
+  for (const auto& [side, bc] : scene.boundaries) {
+    const int axis = side[0] - 'x';
+    const double at = side[1] == '-' ? scene.domain_origin(axis)
+                                     : scene.domain_origin(axis) + scene.domain_size(axis);
+    auto facets = boundary_facets<dim>(
+        mesh, [&](const Vec& x) { return std::abs(x(axis) - at) < tolerance; });
+    BoundaryCondition named = bc;
+    named.group = side;
+    if (named.name.empty()) named.name = side;
+    description.boundaries.push_back(named);
+    constraints.push_back(make_constraint<dim>(named, facets, mesh, "box scene"));
+  }
+  MaterialPoints<dim> points;
+  const double density = scene.material.dry_density();
+  const double g = Eigen::Map<const Vec>(scene.gravity.data()).norm();
+  const auto local = pattern<dim>(scene.points_per_cell);
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
+    Vec centroid = Vec::Zero();
+    for (int n : mesh.cell_nodes[c]) centroid += mesh.node_position[n];
+    centroid /= dim + 1;
+    if ((centroid.array() < scene.block_min.array()).any() ||
+        (centroid.array() > scene.block_max.array()).any())
+      continue;
+    for (const auto& l : local) {
+      Vec x = Vec::Zero();
+      for (int i = 0; i <= dim; ++i) x += l(i) * mesh.node_position[mesh.cell_nodes[c][i]];
+      const std::size_t p = points.size();
+      points.resize(p + 1);
+      points.position[p] = x;
+      points.volume[p] = mesh.cell_volume[c] / static_cast<double>(local.size());
+      points.mass[p] = density * points.volume[p];
+      points.cell[p] = static_cast<int>(c);
+      points.id[p] = static_cast<int>(p);
+      if (scene.k0 >= 0) {
+        const double sigma_v = -density * g * (scene.block_max(1) - x(1));
+        points.stress[p] << scene.k0 * sigma_v, sigma_v, scene.k0 * sigma_v, 0, 0, 0;
+      }
+    }
+  }
+  return Simulation<dim>(std::move(description), std::move(mesh), std::move(points),
+                         std::move(constraints));
+}
+
+template Simulation<2> make_box_simulation<2>(const BoxScene<2>&);
+template Simulation<3> make_box_simulation<3>(const BoxScene<3>&);
+
+}  // namespace lituya::solver

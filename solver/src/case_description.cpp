@@ -1,0 +1,260 @@
+#include "lituya/solver/case_description.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "lituya/common/input_error.hpp"
+
+namespace lituya::solver {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+toml::array to_array(const std::vector<std::string>& v) {
+  toml::array a;
+  for (const auto& s : v) a.push_back(s);
+  return a;
+}
+}  // namespace
+
+Material read_material(const TomlTable& t) {
+  Material m;
+  m.name = t.string("name");
+  std::string model = t.choice("model", {"mohr-coulomb", "linear-elastic"});
+  m.model = model == "mohr-coulomb" ? MaterialModel::kMohrCoulomb : MaterialModel::kLinearElastic;
+  m.solid_density = t.number_in("solid_density", 1e-6, 1e6);
+  if (!t.has("porosity")) t.fail("material '" + m.name + "' is missing 'porosity' (in (0, 1))");
+  m.porosity = t.number("porosity");
+  if (!(m.porosity > 0 && m.porosity < 1))
+    t.fail("'porosity' of material '" + m.name + "' must lie in (0, 1)", "porosity");
+  m.youngs_modulus = t.number_in("youngs_modulus", 1e-9, 1e15);
+  m.poisson_ratio = t.number_in("poisson_ratio", 0.0, 0.4999);
+  if (m.model == MaterialModel::kMohrCoulomb) {
+    m.friction_angle = t.number_in("friction_angle", 0.0, 89.0);
+    m.dilatancy_angle = t.number_in_or("dilatancy_angle", 0.0, m.friction_angle, 0.0);
+    m.cohesion = t.number_in_or("cohesion", 0.0, 1e15, 0.0);
+    const double tan_phi = std::tan(m.friction_angle * kPi / 180.0);
+    const double apex = tan_phi > 0 ? m.cohesion / tan_phi : 1e300;
+    m.tensile_strength = t.number_in_or("tensile_strength", 0.0, apex * (1 + 1e-12), apex);
+  } else {
+    for (const char* k : {"friction_angle", "dilatancy_angle", "cohesion", "tensile_strength"})
+      if (t.has(k))
+        t.fail(std::string("'") + k + "' is a Mohr-Coulomb parameter; material '" + m.name +
+                   "' is linear-elastic",
+               k);
+  }
+  m.grain_diameter = t.number_in_or("grain_diameter", 1e-9, 10.0, 0.0);
+  t.finish();
+  return m;
+}
+
+BoundaryCondition read_boundary(const TomlTable& t, int dimension) {
+  BoundaryCondition b;
+  b.group = t.string("group");
+  b.name = t.string_or("name", b.group);
+  std::string type = t.choice("type", {"fixed", "roller", "contact", "fixity"});
+  b.type = type == "fixed"     ? BoundaryType::kFixed
+           : type == "roller"  ? BoundaryType::kRoller
+           : type == "contact" ? BoundaryType::kContact
+                               : BoundaryType::kFixity;
+  if (b.type == BoundaryType::kContact)
+    b.friction = t.number_in_or("friction", 0.0, 10.0, 0.0);
+  else if (t.has("friction"))
+    t.fail("'friction' applies only to type = \"contact\"", "friction");
+  if (b.type == BoundaryType::kFixity) {
+    for (const std::string& d : t.strings("directions")) {
+      int axis = d == "x" ? 0 : d == "y" ? 1 : d == "z" ? 2 : -1;
+      if (axis < 0 || axis >= dimension)
+        t.fail("direction \"" + d + "\" is not one of the " + std::to_string(dimension) +
+                   "D axes (\"x\", \"y\"" + (dimension == 3 ? ", \"z\")" : ")"),
+               "directions");
+      b.directions.push_back(axis);
+    }
+    if (b.directions.empty()) t.fail("'directions' must name at least one axis", "directions");
+  } else if (t.has("directions")) {
+    t.fail("'directions' applies only to type = \"fixity\"", "directions");
+  }
+  t.finish();
+  return b;
+}
+
+Stage read_stage(const TomlTable& t) {
+  Stage s;
+  s.name = t.string("name");
+  std::string type = t.choice("type", {"quasi-static", "dynamic"});
+  s.type = type == "quasi-static" ? StageType::kQuasiStatic : StageType::kDynamic;
+  s.duration = t.number_in("duration", 1e-12, 1e9);
+  s.courant = t.number_in_or("courant", 1e-6, 1.0, 0.5);
+  s.damping = t.number_in_or("damping", 0.0, 0.99, s.type == StageType::kQuasiStatic ? 0.7 : 0.0);
+  s.output_interval = t.number_in_or("output_interval", 0.0, 1e9, 0.0);
+  s.boundaries = t.strings_or("boundaries", {});
+  if (s.type == StageType::kQuasiStatic) {
+    s.kinetic_energy_ratio = t.number_in_or("kinetic_energy_ratio", 0.0, 1.0, 0.0);
+    s.reset_displacement = t.boolean_or("reset_displacement", true);
+  } else {
+    for (const char* k : {"kinetic_energy_ratio", "reset_displacement"})
+      if (t.has(k))
+        t.fail(std::string("'") + k + "' applies only to type = \"quasi-static\"", k);
+    s.reset_displacement = false;
+  }
+  t.finish();
+  return s;
+}
+
+SolverSettings read_solver_settings(const TomlTable& t) {
+  SolverSettings s;
+  s.scheme = t.choice_or("scheme", {"musl", "usl"}, "musl") == "musl" ? TransferScheme::kMUSL
+                                                                       : TransferScheme::kUSL;
+  s.flip_fraction = t.number_in_or("flip_fraction", 0.0, 1.0, s.flip_fraction);
+  s.max_velocity = t.number_in_or("max_velocity", 1e-9, 1e9, s.max_velocity);
+  t.finish();
+  return s;
+}
+
+OutputSettings read_output_settings(const TomlTable& t) {
+  OutputSettings o;
+  const std::vector<std::string> allowed = o.point_fields;
+  if (t.has("point_fields")) {
+    o.point_fields = t.strings("point_fields");
+    for (const auto& f : o.point_fields) {
+      bool ok = false;
+      for (const auto& a : allowed) ok = ok || a == f;
+      if (!ok) {
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        t.fail("unknown point field \"" + f + "\" (allowed: " + list + ")", "point_fields");
+      }
+    }
+  }
+  o.grid = t.boolean_or("grid", true);
+  t.finish();
+  return o;
+}
+
+toml::table to_toml(const Material& m) {
+  toml::table t{{"name", m.name},
+                {"model", m.model == MaterialModel::kMohrCoulomb ? "mohr-coulomb"
+                                                                 : "linear-elastic"},
+                {"solid_density", m.solid_density},
+                {"porosity", m.porosity},
+                {"youngs_modulus", m.youngs_modulus},
+                {"poisson_ratio", m.poisson_ratio}};
+  if (m.model == MaterialModel::kMohrCoulomb) {
+    t.insert("friction_angle", m.friction_angle);
+    t.insert("dilatancy_angle", m.dilatancy_angle);
+    t.insert("cohesion", m.cohesion);
+    if (m.tensile_strength < 1e299) t.insert("tensile_strength", m.tensile_strength);
+  }
+  if (m.grain_diameter > 0) t.insert("grain_diameter", m.grain_diameter);
+  return t;
+}
+
+toml::table to_toml(const BoundaryCondition& b) {
+  static const char* names[] = {"fixed", "roller", "contact", "fixity"};
+  toml::table t{{"name", b.name}, {"group", b.group}, {"type", names[static_cast<int>(b.type)]}};
+  if (b.type == BoundaryType::kContact) t.insert("friction", b.friction);
+  if (b.type == BoundaryType::kFixity) {
+    toml::array a;
+    for (int d : b.directions) a.push_back(std::string(1, "xyz"[d]));
+    t.insert("directions", a);
+  }
+  return t;
+}
+
+toml::table to_toml(const Stage& s) {
+  toml::table t{{"name", s.name},
+                {"type", s.type == StageType::kQuasiStatic ? "quasi-static" : "dynamic"},
+                {"duration", s.duration},
+                {"courant", s.courant},
+                {"damping", s.damping},
+                {"output_interval", s.output_interval},
+                {"boundaries", to_array(s.boundaries)}};
+  if (s.type == StageType::kQuasiStatic) {
+    t.insert("kinetic_energy_ratio", s.kinetic_energy_ratio);
+    t.insert("reset_displacement", s.reset_displacement);
+  }
+  return t;
+}
+
+toml::table to_toml(const SolverSettings& s) {
+  return toml::table{{"scheme", s.scheme == TransferScheme::kMUSL ? "musl" : "usl"},
+                     {"flip_fraction", s.flip_fraction},
+                     {"max_velocity", s.max_velocity}};
+}
+
+toml::table to_toml(const OutputSettings& o) {
+  return toml::table{{"point_fields", to_array(o.point_fields)}, {"grid", o.grid}};
+}
+
+void check_stage_boundaries(const std::vector<Stage>& stages,
+                            const std::vector<BoundaryCondition>& boundaries,
+                            const std::vector<TomlTable>& stage_tables) {
+  std::set<std::string> names, stage_names;
+  for (const auto& b : boundaries)
+    if (!names.insert(b.name).second)
+      throw InputError(stage_tables.empty() ? "" : stage_tables[0].file(), 0,
+                       "two [[boundary]] entries are named '" + b.name + "'");
+  for (size_t i = 0; i < stages.size(); ++i) {
+    if (!stage_names.insert(stages[i].name).second)
+      stage_tables[i].fail("two [[stage]] entries are named '" + stages[i].name + "'", "name");
+    for (const auto& used : stages[i].boundaries)
+      if (!names.count(used))
+        stage_tables[i].fail("stage '" + stages[i].name + "' uses boundary '" + used +
+                                 "', which no [[boundary]] defines",
+                             "boundaries");
+  }
+}
+
+CaseDescription read_case(const std::string& case_folder) {
+  namespace fs = std::filesystem;
+  CaseDescription c;
+  c.folder = case_folder;
+  const fs::path stages_path = fs::path(case_folder) / "stages.toml";
+  if (!fs::exists(stages_path))
+    throw InputError(stages_path.string(), 0,
+                     "not found: is this a case folder written by `lituya pre`?");
+  TomlDocument doc(stages_path);
+  TomlTable root = doc.root();
+  TomlDocument::check_header(root, "lituya-stages", 1);
+  c.dimension = static_cast<int>(root.integer("dimension"));
+  if (c.dimension != 2 && c.dimension != 3) root.fail("'dimension' must be 2 or 3", "dimension");
+  c.gravity = root.numbers("gravity");
+  if (static_cast<int>(c.gravity.size()) != c.dimension)
+    root.fail("'gravity' must have " + std::to_string(c.dimension) + " components", "gravity");
+  c.geometry_file = (fs::path(case_folder) / root.string("geometry")).string();
+  c.points_file = (fs::path(case_folder) / root.string("points")).string();
+  c.materials_file = (fs::path(case_folder) / root.string("materials")).string();
+  for (const TomlTable& g : root.tables("group")) {
+    Group group{g.string("name"), static_cast<int>(g.integer("dimension"))};
+    g.finish();
+    c.groups.push_back(group);
+  }
+  if (auto s = root.optional_table("solver")) c.solver = read_solver_settings(*s);
+  if (auto o = root.optional_table("output")) c.output = read_output_settings(*o);
+  for (const TomlTable& b : root.tables("boundary")) {
+    c.boundaries.push_back(read_boundary(b, c.dimension));
+    bool found = false;
+    for (const auto& g : c.groups)
+      found = found || (g.name == c.boundaries.back().group && g.dimension == c.dimension - 1);
+    if (!found)
+      b.fail("boundary group '" + c.boundaries.back().group + "' is not a physical group of " +
+                 "dimension " + std::to_string(c.dimension - 1) + " in this case",
+             "group");
+  }
+  std::vector<TomlTable> stage_tables = root.tables("stage");
+  for (const TomlTable& s : stage_tables) c.stages.push_back(read_stage(s));
+  if (c.stages.empty()) root.fail("no [[stage]] given: nothing to run");
+  check_stage_boundaries(c.stages, c.boundaries, stage_tables);
+  root.finish();
+
+  TomlDocument mdoc(c.materials_file);
+  TomlTable mroot = mdoc.root();
+  TomlDocument::check_header(mroot, "lituya-materials", 1);
+  for (const TomlTable& m : mroot.tables("material")) c.materials.push_back(read_material(m));
+  if (c.materials.empty()) mroot.fail("no [[material]] given");
+  mroot.finish();
+  return c;
+}
+
+}  // namespace lituya::solver

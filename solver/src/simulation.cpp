@@ -1,0 +1,470 @@
+#include "lituya/solver/simulation.hpp"
+
+#include <omp.h>
+#include <unistd.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+#include "lituya/common/input_error.hpp"
+#include "lituya/common/process_memory.hpp"
+
+namespace lituya::solver {
+
+namespace {
+
+// sigma . g for the in-plane (2D) or full (3D) stress tensor in Voigt storage.
+inline Eigen::Vector2d stress_dot(const Voigt6& s, const Eigen::Vector2d& g) {
+  return {s(0) * g(0) + s(3) * g(1), s(3) * g(0) + s(1) * g(1)};
+}
+inline Eigen::Vector3d stress_dot(const Voigt6& s, const Eigen::Vector3d& g) {
+  return {s(0) * g(0) + s(3) * g(1) + s(5) * g(2), s(3) * g(0) + s(1) * g(1) + s(4) * g(2),
+          s(5) * g(0) + s(4) * g(1) + s(2) * g(2)};
+}
+
+// Strain increment (engineering shear) from the velocity gradient L = dv/dx times dt.
+inline Voigt6 strain_increment(const Eigen::Matrix2d& l, double dt) {
+  Voigt6 e;
+  e << l(0, 0) * dt, l(1, 1) * dt, 0.0, (l(0, 1) + l(1, 0)) * dt, 0.0, 0.0;
+  return e;
+}
+inline Voigt6 strain_increment(const Eigen::Matrix3d& l, double dt) {
+  Voigt6 e;
+  e << l(0, 0) * dt, l(1, 1) * dt, l(2, 2) * dt, (l(0, 1) + l(1, 0)) * dt,
+      (l(1, 2) + l(2, 1)) * dt, (l(0, 2) + l(2, 0)) * dt;
+  return e;
+}
+
+// Jaumann rotation of the stress: sigma += Omega sigma - sigma Omega, Omega = dt skew(L), so
+// that a rigid rotation carries the stress with it (objective stress rate).
+inline void rotate_stress(Voigt6& s, const Eigen::Matrix2d& l, double dt) {
+  const double w = 0.5 * (l(0, 1) - l(1, 0)) * dt;
+  const double sxx = s(0), syy = s(1), sxy = s(3);
+  s(0) = sxx + 2 * w * sxy;
+  s(1) = syy - 2 * w * sxy;
+  s(3) = sxy + w * (syy - sxx);
+}
+inline void rotate_stress(Voigt6& s, const Eigen::Matrix3d& l, double dt) {
+  const Eigen::Matrix3d omega = 0.5 * (l - l.transpose()) * dt;
+  Eigen::Matrix3d sigma;
+  sigma << s(0), s(3), s(5), s(3), s(1), s(4), s(5), s(4), s(2);
+  const Eigen::Matrix3d rate = omega * sigma - sigma * omega;
+  s(0) += rate(0, 0);
+  s(1) += rate(1, 1);
+  s(2) += rate(2, 2);
+  s(3) += rate(0, 1);
+  s(4) += rate(1, 2);
+  s(5) += rate(0, 2);
+}
+
+double wall_seconds() {
+  using clock = std::chrono::steady_clock;
+  static const auto start = clock::now();
+  return std::chrono::duration<double>(clock::now() - start).count();
+}
+
+std::string format_vector(const double* v, int n) {
+  std::ostringstream s;
+  s << "(";
+  for (int i = 0; i < n; ++i) s << (i ? ", " : "") << v[i];
+  s << ")";
+  return s.str();
+}
+
+}  // namespace
+
+template <int dim>
+Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh,
+                            MaterialPoints<dim> points,
+                            std::vector<NodalConstraint<dim>> constraints)
+    : description_(std::move(description)),
+      mesh_(std::move(mesh)),
+      points_(std::move(points)),
+      constraints_(std::move(constraints)) {
+  for (int d = 0; d < dim; ++d) gravity_(d) = description_.gravity.at(d);
+  flip_fraction_ = description_.solver.flip_fraction;
+  musl_ = description_.solver.scheme == TransferScheme::kMUSL;
+  max_velocity_ = description_.solver.max_velocity;
+  for (const Material& m : description_.materials) {
+    MaterialModelData data;
+    data.model = m.model;
+    data.elastic = ElasticConstants::from_young_poisson(m.youngs_modulus, m.poisson_ratio);
+    if (m.model == MaterialModel::kMohrCoulomb)
+      data.mohr_coulomb = std::make_unique<MohrCoulomb>(
+          m.youngs_modulus, m.poisson_ratio, m.friction_angle, m.dilatancy_angle, m.cohesion,
+          m.tensile_strength);
+    data.wave_speed = std::sqrt(data.elastic.constrained_modulus() / m.dry_density());
+    materials_.push_back(std::move(data));
+  }
+  const std::size_t n_nodes = mesh_.node_count();
+  grid_.mass.assign(n_nodes, 0.0);
+  grid_.momentum.assign(n_nodes, Vec::Zero());
+  grid_.force.assign(n_nodes, Vec::Zero());
+  node_velocity_.assign(n_nodes, Vec::Zero());
+  node_acceleration_.assign(n_nodes, Vec::Zero());
+  // Locate every point and cache its shape values.
+  shape_.resize(points_.size());
+  for (std::size_t p = 0; p < points_.size(); ++p) {
+    int start = points_.cell[p];
+    int cell = -1;
+    if (start >= 0 && start < static_cast<int>(mesh_.cell_count()))
+      cell = mesh_.locate(start, points_.position[p], shape_[p]);
+    if (cell < 0 && p > 0) cell = mesh_.locate(points_.cell[p - 1], points_.position[p], shape_[p]);
+    if (cell < 0) cell = mesh_.locate_anywhere(points_.position[p], shape_[p]);
+    if (cell < 0)
+      throw InputError(description_.points_file, 0,
+                       "point " + std::to_string(points_.id[p]) + " at " +
+                           format_vector(points_.position[p].data(), dim) +
+                           " lies outside the background mesh");
+    points_.cell[p] = cell;
+  }
+  next_time_step_ = stable_time_step(1.0);
+}
+
+template <int dim>
+void Simulation<dim>::set_threads(int threads) {
+  threads_ = std::max(1, threads);
+  thread_buffers_.resize(threads_ - 1);
+  for (NodalBuffer& b : thread_buffers_) {
+    b.mass.assign(mesh_.node_count(), 0.0);
+    b.momentum.assign(mesh_.node_count(), Vec::Zero());
+    b.force.assign(mesh_.node_count(), Vec::Zero());
+  }
+}
+
+template <int dim>
+void Simulation<dim>::activate_boundaries(const std::vector<std::string>& names) {
+  active_constraints_.clear();
+  for (const std::string& name : names)
+    for (std::size_t i = 0; i < description_.boundaries.size(); ++i)
+      if (description_.boundaries[i].name == name) active_constraints_.push_back(&constraints_[i]);
+}
+
+template <int dim>
+double Simulation<dim>::stable_time_step(double courant) const {
+  double dt = std::numeric_limits<double>::max();
+  const std::size_t n = points_.size();
+#pragma omp parallel for num_threads(threads_) reduction(min : dt) schedule(static)
+  for (std::size_t p = 0; p < n; ++p) {
+    const double speed = materials_[points_.material[p]].wave_speed + points_.velocity[p].norm();
+    dt = std::min(dt, mesh_.cell_min_height[points_.cell[p]] / speed);
+  }
+  return courant * dt;
+}
+
+template <int dim>
+void Simulation<dim>::points_to_nodes(Transfer what) {
+  const bool with_force = what == Transfer::kMassMomentumForce;
+  const std::size_t n_points = points_.size();
+  const std::size_t n_nodes = mesh_.node_count();
+#pragma omp parallel num_threads(threads_)
+  {
+    const int t = omp_get_thread_num();
+    NodalBuffer& b = t == 0 ? grid_ : thread_buffers_[t - 1];
+    if (with_force) {
+      std::fill(b.mass.begin(), b.mass.end(), 0.0);
+      std::fill(b.force.begin(), b.force.end(), Vec::Zero());
+    }
+    std::fill(b.momentum.begin(), b.momentum.end(), Vec::Zero());
+#pragma omp for schedule(static)
+    for (std::size_t p = 0; p < n_points; ++p) {
+      const int cell = points_.cell[p];
+      const auto& nodes = mesh_.cell_nodes[cell];
+      const Shape& n = shape_[p];
+      const double m = points_.mass[p];
+      const Vec momentum = m * points_.velocity[p];
+      if (with_force) {
+        const auto& grad = mesh_.cell_shape_gradient[cell];
+        const double v = points_.volume[p];
+        const Voigt6& sigma = points_.stress[p];
+        const Vec weight = m * gravity_;
+        for (int i = 0; i <= dim; ++i) {
+          const int node = nodes[i];
+          b.mass[node] += n(i) * m;
+          b.momentum[node] += n(i) * momentum;
+          // Internal force -V sigma . grad N (weak form of div sigma, eq. 11) and gravity.
+          b.force[node] += n(i) * weight - v * stress_dot(sigma, grad[i]);
+        }
+      } else {
+        for (int i = 0; i <= dim; ++i) b.momentum[nodes[i]] += n(i) * momentum;
+      }
+    }
+    // Sum the other threads' buffers into the grid, in a fixed order (deterministic for a
+    // given thread count).
+    if (threads_ > 1) {
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < n_nodes; ++i)
+        for (const NodalBuffer& other : thread_buffers_) {
+          if (with_force) {
+            grid_.mass[i] += other.mass[i];
+            grid_.force[i] += other.force[i];
+          }
+          grid_.momentum[i] += other.momentum[i];
+        }
+    }
+  }
+}
+
+template <int dim>
+void Simulation<dim>::nodal_update(double dt, double damping) {
+  const std::size_t n_nodes = mesh_.node_count();
+  // Nodes that hold almost no mass (a point at the far corner of a cell) would get
+  // meaningless velocities; their velocity is taken as zero.
+  constexpr double kMassFloor = 1e-14;
+#pragma omp parallel for num_threads(threads_) schedule(static)
+  for (std::size_t i = 0; i < n_nodes; ++i) {
+    const double m = grid_.mass[i];
+    if (m <= kMassFloor) {
+      node_velocity_[i].setZero();
+      node_acceleration_[i].setZero();
+      continue;
+    }
+    const Vec velocity = grid_.momentum[i] / m;
+    Vec force = grid_.force[i];
+    if (damping > 0) {
+      // Local (Cundall) damping: a force opposing the velocity, proportional to the
+      // unbalanced force, that vanishes at equilibrium.
+      for (int d = 0; d < dim; ++d) {
+        const double sign = velocity(d) > 0 ? 1.0 : (velocity(d) < 0 ? -1.0 : 0.0);
+        force(d) -= damping * std::abs(force(d)) * sign;
+      }
+    }
+    node_velocity_[i] = velocity + dt * force / m;
+    node_acceleration_[i] = velocity;  // old velocity, finished below
+  }
+  apply_constraints<dim>(active_constraints_, node_velocity_);
+#pragma omp parallel for num_threads(threads_) schedule(static)
+  for (std::size_t i = 0; i < n_nodes; ++i)
+    node_acceleration_[i] = (node_velocity_[i] - node_acceleration_[i]) / dt;
+}
+
+template <int dim>
+void Simulation<dim>::nodes_to_points(double dt) {
+  const std::size_t n_points = points_.size();
+  const double flip = flip_fraction_;
+#pragma omp parallel for num_threads(threads_) schedule(static)
+  for (std::size_t p = 0; p < n_points; ++p) {
+    const auto& nodes = mesh_.cell_nodes[points_.cell[p]];
+    const Shape& n = shape_[p];
+    Vec acceleration = Vec::Zero(), velocity = Vec::Zero();
+    for (int i = 0; i <= dim; ++i) {
+      acceleration += n(i) * node_acceleration_[nodes[i]];
+      velocity += n(i) * node_velocity_[nodes[i]];
+    }
+    // FLIP keeps the point's own velocity (little numerical dissipation), PIC takes the
+    // grid's (stable, dissipative); the blend trades one against the other.
+    points_.velocity[p] = flip * (points_.velocity[p] + dt * acceleration) + (1 - flip) * velocity;
+    points_.position[p] += dt * velocity;
+    points_.displacement[p] += dt * velocity;
+  }
+}
+
+template <int dim>
+void Simulation<dim>::remap_momentum() {
+  points_to_nodes(Transfer::kMomentum);
+  const std::size_t n_nodes = mesh_.node_count();
+#pragma omp parallel for num_threads(threads_) schedule(static)
+  for (std::size_t i = 0; i < n_nodes; ++i) {
+    const double m = grid_.mass[i];
+    node_velocity_[i] = m > 1e-14 ? Vec(grid_.momentum[i] / m) : Vec::Zero();
+  }
+  apply_constraints<dim>(active_constraints_, node_velocity_);
+}
+
+template <int dim>
+void Simulation<dim>::update_stress_and_relocate(double dt) {
+  using Gradient = Eigen::Matrix<double, dim, dim>;
+  const std::size_t n_points = points_.size();
+  long bad_point = -1;
+  int bad_kind = 0;  // 1 = non-finite, 2 = too fast, 3 = left the mesh
+  double dt_next = std::numeric_limits<double>::max();
+#pragma omp parallel for num_threads(threads_) schedule(static) reduction(min : dt_next)
+  for (std::size_t p = 0; p < n_points; ++p) {
+    const int cell = points_.cell[p];
+    const auto& nodes = mesh_.cell_nodes[cell];
+    const auto& grad = mesh_.cell_shape_gradient[cell];
+    Gradient l = Gradient::Zero();  // velocity gradient dv/dx
+    for (int i = 0; i <= dim; ++i) l.noalias() += node_velocity_[nodes[i]] * grad[i].transpose();
+    const Voigt6 strain = strain_increment(l, dt);
+    Voigt6& sigma = points_.stress[p];
+    rotate_stress(sigma, l, dt);
+    const MaterialModelData& material = materials_[points_.material[p]];
+    if (material.model == MaterialModel::kMohrCoulomb)
+      points_.plastic_strain[p] += material.mohr_coulomb->update(sigma, strain);
+    else
+      elastic_update(material.elastic, sigma, strain);
+    points_.volume[p] *= 1.0 + strain(0) + strain(1) + strain(2);
+
+    const double speed = points_.velocity[p].norm();
+    int kind = 0;
+    if (!std::isfinite(speed) || !sigma.allFinite())
+      kind = 1;
+    else if (speed > max_velocity_)
+      kind = 2;
+    else {
+      const int found = mesh_.locate(cell, points_.position[p], shape_[p]);
+      if (found < 0)
+        kind = 3;
+      else {
+        points_.cell[p] = found;
+        dt_next = std::min(dt_next, mesh_.cell_min_height[found] / (material.wave_speed + speed));
+      }
+    }
+    if (kind != 0) {
+#pragma omp critical(lituya_bad_point)
+      if (bad_point < 0 || static_cast<long>(p) < bad_point) {
+        bad_point = static_cast<long>(p);
+        bad_kind = kind;
+      }
+    }
+  }
+  next_time_step_ = dt_next;
+  if (bad_point >= 0) {
+    const std::size_t p = static_cast<std::size_t>(bad_point);
+    std::ostringstream m;
+    m << "step " << step_count_ << ": point " << points_.id[p] << " (material '"
+      << description_.materials[points_.material[p]].name << "') at "
+      << format_vector(points_.position[p].data(), dim) << ": ";
+    if (bad_kind == 1)
+      m << "velocity or stress is not finite (velocity " << format_vector(points_.velocity[p].data(), dim)
+        << ", stress " << format_vector(points_.stress[p].data(), 6)
+        << "); the run went unstable: reduce the Courant number or check the material";
+    else if (bad_kind == 2)
+      m << "speed " << points_.velocity[p].norm() << " m/s exceeds [solver] max_velocity = "
+        << max_velocity_ << " m/s; the run is probably unstable (reduce the Courant number)";
+    else
+      m << "left the background mesh (velocity "
+        << format_vector(points_.velocity[p].data(), dim)
+        << " m/s); extend the mesh or close the boundary it crossed";
+    throw RunError(m.str());
+  }
+}
+
+template <int dim>
+void Simulation<dim>::step(double dt, double damping) {
+  points_to_nodes(Transfer::kMassMomentumForce);
+  nodal_update(dt, damping);
+  nodes_to_points(dt);
+  if (musl_) remap_momentum();
+  update_stress_and_relocate(dt);
+  ++step_count_;
+}
+
+template <int dim>
+void Simulation<dim>::map_to_grid() {
+  points_to_nodes(Transfer::kMassMomentumForce);
+  for (std::size_t i = 0; i < mesh_.node_count(); ++i)
+    node_velocity_[i] = grid_.mass[i] > 1e-14 ? Vec(grid_.momentum[i] / grid_.mass[i]) : Vec::Zero();
+}
+
+template <int dim>
+double Simulation<dim>::kinetic_energy() const {
+  double e = 0;
+  const std::size_t n = points_.size();
+#pragma omp parallel for num_threads(threads_) reduction(+ : e) schedule(static)
+  for (std::size_t p = 0; p < n; ++p) e += 0.5 * points_.mass[p] * points_.velocity[p].squaredNorm();
+  return e;
+}
+
+template <int dim>
+std::size_t Simulation<dim>::storage_bytes() const {
+  const std::size_t nodes = mesh_.node_count() * (sizeof(double) + 4 * sizeof(Vec));
+  const std::size_t cells =
+      mesh_.cell_count() * (2 * sizeof(typename Mesh<dim>::CellNodes) +
+                            sizeof(Eigen::Matrix<double, dim, dim>) +
+                            (dim + 1) * sizeof(Vec) + 2 * sizeof(double));
+  return points_.bytes() + shape_.size() * sizeof(Shape) + nodes + cells +
+         thread_buffers_.size() * mesh_.node_count() * (sizeof(double) + 2 * sizeof(Vec));
+}
+
+template <int dim>
+void Simulation<dim>::report_progress(const Stage& stage, double t, double wall, bool final_line) {
+  if (!progress_) return;
+  const double now = wall_seconds();
+  if (!final_line && now - last_progress_wall_ < 2.0) return;
+  last_progress_wall_ = now;
+  static const bool terminal = isatty(fileno(stderr));
+  const double rate = wall > 0 ? static_cast<double>(points_.size()) * stage_steps_ / wall : 0;
+  const double eta = t > 0 ? wall * (stage.duration - t) / t : 0;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "  %-12s t = %8.4f / %.4f s  step %8ld  dt %.3e s  %6.2f M point-steps/s  "
+                "eta %5.0f s",
+                stage.name.c_str(), t, stage.duration, stage_steps_, last_dt_, rate / 1e6,
+                final_line ? 0.0 : eta);
+  *progress_ << (terminal ? "\r" : "") << line << (terminal && !final_line ? "" : "\n")
+             << std::flush;
+}
+
+template <int dim>
+StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback& on_output) {
+  activate_boundaries(stage.boundaries);
+  StageReport report;
+  report.stage = stage.name;
+  const double start_wall = wall_seconds();
+  const bool quasi_static = stage.type == StageType::kQuasiStatic;
+  double t = 0;
+  int output_index = 0;
+  if (on_output) on_output(stage, t, output_index++);
+  double next_output = stage.output_interval > 0 ? stage.output_interval : stage.duration;
+  double max_kinetic_energy = 0;
+  stage_steps_ = 0;
+  report.stop_reason = "duration reached";
+  const double time_tolerance = 1e-9 * stage.duration;
+  while (t < stage.duration - time_tolerance) {
+    // The Courant-limited step, shortened to land exactly on output times.
+    double dt = stage.courant * next_time_step_;
+    dt = std::min(dt, next_output - t);
+    last_dt_ = dt;
+    step(dt, stage.damping);
+    t += dt;
+    ++stage_steps_;
+    bool output_now = t >= next_output - time_tolerance;
+    if (quasi_static && stage.kinetic_energy_ratio > 0) {
+      const double e = kinetic_energy();
+      max_kinetic_energy = std::max(max_kinetic_energy, e);
+      if (stage_steps_ > 100 && e <= stage.kinetic_energy_ratio * max_kinetic_energy) {
+        std::ostringstream reason;
+        reason << "kinetic energy ratio " << e / max_kinetic_energy << " below "
+               << stage.kinetic_energy_ratio;
+        report.stop_reason = reason.str();
+        output_now = true;
+        if (on_output) on_output(stage, t, output_index++);
+        break;
+      }
+    }
+    if (output_now) {
+      if (on_output) on_output(stage, t, output_index++);
+      next_output = std::min(next_output + (stage.output_interval > 0 ? stage.output_interval
+                                                                      : stage.duration),
+                             stage.duration);
+    }
+    report_progress(stage, t, wall_seconds() - start_wall, false);
+  }
+  report.steps = stage_steps_;
+  report.simulated_time = t;
+  report.wall_time = wall_seconds() - start_wall;
+  report.point_steps_per_second =
+      report.wall_time > 0 ? static_cast<double>(points_.size()) * stage_steps_ / report.wall_time
+                           : 0;
+  report.peak_memory = peak_memory_bytes();
+  report_progress(stage, t, report.wall_time, true);
+  if (quasi_static) {
+    // The quasi-static stage ends in equilibrium: the next stage starts at rest.
+    for (auto& v : points_.velocity) v.setZero();
+    if (stage.reset_displacement)
+      for (auto& u : points_.displacement) u.setZero();
+  }
+  return report;
+}
+
+template class Simulation<2>;
+template class Simulation<3>;
+
+}  // namespace lituya::solver
