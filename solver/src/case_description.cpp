@@ -108,6 +108,7 @@ SolverSettings read_solver_settings(const TomlTable& t) {
                                                                        : TransferScheme::kUSL;
   s.flip_fraction = t.number_in_or("flip_fraction", 0.0, 1.0, s.flip_fraction);
   s.max_velocity = t.number_in_or("max_velocity", 1e-9, 1e9, s.max_velocity);
+  s.volumetric_smoothing = t.boolean_or("volumetric_smoothing", s.volumetric_smoothing);
   t.finish();
   return s;
 }
@@ -180,7 +181,8 @@ toml::table to_toml(const Stage& s) {
 toml::table to_toml(const SolverSettings& s) {
   return toml::table{{"scheme", s.scheme == TransferScheme::kMUSL ? "musl" : "usl"},
                      {"flip_fraction", s.flip_fraction},
-                     {"max_velocity", s.max_velocity}};
+                     {"max_velocity", s.max_velocity},
+                     {"volumetric_smoothing", s.volumetric_smoothing}};
 }
 
 toml::table to_toml(const OutputSettings& o) {

@@ -91,6 +91,7 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh,
   flip_fraction_ = description_.solver.flip_fraction;
   musl_ = description_.solver.scheme == TransferScheme::kMUSL;
   max_velocity_ = description_.solver.max_velocity;
+  volumetric_smoothing_ = description_.solver.volumetric_smoothing;
   for (const Material& m : description_.materials) {
     MaterialModelData data;
     data.model = m.model;
@@ -108,6 +109,11 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh,
   grid_.force.assign(n_nodes, Vec::Zero());
   node_velocity_.assign(n_nodes, Vec::Zero());
   node_acceleration_.assign(n_nodes, Vec::Zero());
+  if (volumetric_smoothing_) {
+    node_volumetric_strain_.assign(n_nodes, 0.0);
+    node_volume_.assign(n_nodes, 0.0);
+    point_volumetric_strain_.assign(points_.size(), 0.0);
+  }
   // Locate every point and cache its shape values.
   shape_.resize(points_.size());
   for (std::size_t p = 0; p < points_.size(); ++p) {
@@ -278,6 +284,53 @@ void Simulation<dim>::remap_momentum() {
 }
 
 template <int dim>
+void Simulation<dim>::smooth_volumetric_strain(double dt) {
+  // The volumetric strain increment of a linear simplex is constant over the cell; with
+  // more cells than nodes, isochoric flow over-constrains the mesh (locking). Averaging it
+  // at the nodes over the surrounding material (weighted by point volume) and interpolating
+  // back leaves one volumetric constraint per node instead of per cell.
+  const std::size_t n_points = points_.size();
+  std::fill(node_volumetric_strain_.begin(), node_volumetric_strain_.end(), 0.0);
+  std::fill(node_volume_.begin(), node_volume_.end(), 0.0);
+  auto cell_volumetric_strain = [&](std::size_t p) {
+    const int cell = points_.cell[p];
+    const auto& nodes = mesh_.cell_nodes[cell];
+    const auto& grad = mesh_.cell_shape_gradient[cell];
+    double divergence = 0;
+    for (int i = 0; i <= dim; ++i) divergence += node_velocity_[nodes[i]].dot(grad[i]);
+    return divergence * dt;
+  };
+  if (threads_ == 1) {
+    for (std::size_t p = 0; p < n_points; ++p) {
+      const double weighted = points_.volume[p] * cell_volumetric_strain(p);
+      for (int node : mesh_.cell_nodes[points_.cell[p]]) {
+        node_volumetric_strain_[node] += weighted;
+        node_volume_[node] += points_.volume[p];
+      }
+    }
+  } else {
+#pragma omp parallel for num_threads(threads_) schedule(static)
+    for (std::size_t p = 0; p < n_points; ++p) {
+      const double weighted = points_.volume[p] * cell_volumetric_strain(p);
+      for (int node : mesh_.cell_nodes[points_.cell[p]]) {
+#pragma omp atomic
+        node_volumetric_strain_[node] += weighted;
+#pragma omp atomic
+        node_volume_[node] += points_.volume[p];
+      }
+    }
+  }
+#pragma omp parallel for num_threads(threads_) schedule(static)
+  for (std::size_t p = 0; p < n_points; ++p) {
+    const auto& nodes = mesh_.cell_nodes[points_.cell[p]];
+    double smoothed = 0;
+    for (int i = 0; i <= dim; ++i)
+      smoothed += shape_[p](i) * node_volumetric_strain_[nodes[i]] / node_volume_[nodes[i]];
+    point_volumetric_strain_[p] = smoothed;
+  }
+}
+
+template <int dim>
 void Simulation<dim>::update_stress_and_relocate(double dt) {
   using Gradient = Eigen::Matrix<double, dim, dim>;
   const std::size_t n_points = points_.size();
@@ -291,7 +344,12 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
     const auto& grad = mesh_.cell_shape_gradient[cell];
     Gradient l = Gradient::Zero();  // velocity gradient dv/dx
     for (int i = 0; i <= dim; ++i) l.noalias() += node_velocity_[nodes[i]] * grad[i].transpose();
-    const Voigt6 strain = strain_increment(l, dt);
+    Voigt6 strain = strain_increment(l, dt);
+    if (volumetric_smoothing_) {
+      // Replace the cell's volumetric part by the smoothed one (in-plane in 2D).
+      const double correction = (point_volumetric_strain_[p] - l.trace() * dt) / dim;
+      for (int d = 0; d < dim; ++d) strain(d) += correction;
+    }
     Voigt6& sigma = points_.stress[p];
     rotate_stress(sigma, l, dt);
     const MaterialModelData& material = materials_[points_.material[p]];
@@ -352,6 +410,7 @@ void Simulation<dim>::step(double dt, double damping) {
   nodal_update(dt, damping);
   nodes_to_points(dt);
   if (musl_) remap_momentum();
+  if (volumetric_smoothing_) smooth_volumetric_strain(dt);
   update_stress_and_relocate(dt);
   ++step_count_;
 }

@@ -64,8 +64,9 @@ Eigen::Matrix<double, dim, 1> mean_displacement(const MaterialPoints<dim>& p) {
   return sum / mass;
 }
 
-// Without boundaries the only external force is gravity, so the centre of mass falls
-// exactly as 1/2 g t^2 (momentum conservation of the transfers), whatever the stresses do.
+// Without boundaries the only external force is gravity, so the total momentum grows exactly
+// as M g t (the transfers conserve momentum), whatever the stresses do; the centre of mass
+// follows 1/2 g t^2 up to the O(g t dt) offset of the symplectic Euler update.
 template <int dim>
 void check_free_fall() {
   BoxScene<dim> scene;
@@ -79,10 +80,20 @@ void check_free_fall() {
   scene.gravity.assign(dim, 0.0);
   scene.gravity[1] = -10.0;
   auto sim = make_box_simulation<dim>(scene);
+  const double dt = 0.5 * sim.stable_time_step(1.0);
   const StageReport r = sim.run_stage(dynamic_stage(0.1), nullptr);
   EXPECT_NEAR(r.simulated_time, 0.1, 1e-12);
-  const Vec u = mean_displacement<dim>(sim.points());
-  EXPECT_NEAR(u(1), -0.5 * 10.0 * 0.1 * 0.1, 1e-10);
+  const auto& p = sim.points();
+  Vec momentum = Vec::Zero();
+  double mass = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    momentum += p.mass[i] * p.velocity[i];
+    mass += p.mass[i];
+  }
+  EXPECT_NEAR(momentum(1) / mass, -10.0 * 0.1, 1e-10);
+  EXPECT_NEAR(momentum(0) / mass, 0.0, 1e-12);
+  const Vec u = mean_displacement<dim>(p);
+  EXPECT_NEAR(u(1), -0.5 * 10.0 * 0.1 * 0.1, 0.5 * 10.0 * 0.1 * 1.01 * dt);
   EXPECT_NEAR(u(0), 0.0, 1e-12);
 }
 
@@ -90,7 +101,9 @@ TEST(Simulation, FreeFallCentreOfMass2D) { check_free_fall<2>(); }
 TEST(Simulation, FreeFallCentreOfMass3D) { check_free_fall<3>(); }
 
 // An elastic block on a rigid floor with Coulomb friction, gravity tilted by theta (the same
-// as an incline): a = g (sin(theta) - mu cos(theta)) while it slides.
+// as an incline): a = g (sin(theta) - mu cos(theta)) while it slides. The block first settles
+// quasi-statically on a no-slip floor, so the release starts from equilibrium stresses and
+// the normal force does not ring.
 double sliding_block_velocity(double theta_deg, double mu, double time) {
   BoxScene<2> scene;
   scene.domain_size = {2.0, 0.5};
@@ -100,10 +113,22 @@ double sliding_block_velocity(double theta_deg, double mu, double time) {
   scene.material = elastic_material(2000, 5e7, 0.3);
   const double theta = theta_deg * kPi / 180;
   scene.gravity = {9.81 * std::sin(theta), -9.81 * std::cos(theta)};
-  scene.boundaries = {{"y-", condition(BoundaryType::kContact, mu)}};
+  BoundaryCondition glued = condition(BoundaryType::kFixed);
+  glued.name = "glued";
+  BoundaryCondition floor = condition(BoundaryType::kContact, mu);
+  floor.name = "floor";
+  scene.boundaries = {{"y-", glued}, {"y-", floor}};
   auto sim = make_box_simulation<2>(scene);
+  Stage settle;
+  settle.name = "settle";
+  settle.type = StageType::kQuasiStatic;
+  settle.duration = 0.5;
+  settle.damping = 0.7;
+  settle.kinetic_energy_ratio = 1e-6;
+  settle.boundaries = {"glued"};
+  sim.run_stage(settle, nullptr);
   Stage stage = dynamic_stage(time);
-  stage.boundaries = {"y-"};
+  stage.boundaries = {"floor"};
   sim.run_stage(stage, nullptr);
   double momentum = 0, mass = 0;
   for (std::size_t i = 0; i < sim.points().size(); ++i) {
@@ -116,15 +141,15 @@ double sliding_block_velocity(double theta_deg, double mu, double time) {
 TEST(Simulation, SlidingBlockMatchesCoulombAcceleration) {
   const double theta = 30, mu = 0.2, t = 0.2;
   const double expected = 9.81 * (std::sin(theta * kPi / 180) - mu * std::cos(theta * kPi / 180)) * t;
-  // 2 %: the sudden gravity load makes the block ring normal to the floor, so the friction
-  // force oscillates about mu N; over 0.2 s (about 80 periods) the oscillation averages out
-  // to within about 1 %.
-  EXPECT_NEAR(sliding_block_velocity(theta, mu, t), expected, 0.02 * expected);
+  // 1 %: the nodal Coulomb law is exact for a rigid block; the elastic block's small
+  // vibrations at release perturb the normal force slightly.
+  EXPECT_NEAR(sliding_block_velocity(theta, mu, t), expected, 0.01 * expected);
 }
 
 TEST(Simulation, BlockSticksWhenFrictionExceedsSlope) {
-  // mu = 0.7 > tan(30 deg) = 0.577: static friction holds the block.
-  EXPECT_NEAR(sliding_block_velocity(30, 0.7, 0.1), 0.0, 2e-3);
+  // mu = 0.7 > tan(30 deg) = 0.577: static friction holds the block (1 mm/s is 0.1 % of the
+  // 0.98 m/s it would reach in 0.1 s without friction).
+  EXPECT_NEAR(sliding_block_velocity(30, 0.7, 0.1), 0.0, 1e-3);
 }
 
 // Quasi-static gravity loading of an elastic column between rollers on a fixed base:

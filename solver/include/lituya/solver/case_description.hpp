@@ -61,6 +61,10 @@ struct SolverSettings {
   TransferScheme scheme = TransferScheme::kMUSL;
   double flip_fraction = 0.99;
   double max_velocity = 100.0;
+  // Average the volumetric strain increment over the cells around each node before the
+  // stress update (nodal mixed discretisation): removes the volumetric locking of linear
+  // triangles and tetrahedra under isochoric plastic flow (psi = 0).
+  bool volumetric_smoothing = true;
 };
 
 struct OutputSettings {

@@ -34,8 +34,27 @@ class MohrCoulomb {
   const ElasticConstants& elastic() const { return elastic_; }
 
  private:
+  // Return mapping of the trial principal stresses t[0] >= t[1] >= t[2] to r (same order).
+  void return_principal(const double t[3], double r[3]) const;
+  // sqrt(2/3 d_eps_p : d_eps_p) with d_eps_p = D^-1 (t - r), coaxial principal values.
+  double equivalent_plastic_strain(const double t[3], const double r[3]) const;
+  // f of the sorted principal stresses s[0] >= s[1] >= s[2].
+  double yield_sorted(const double s[3]) const {
+    return s[0] * (1 + sin_phi_) - s[2] * (1 - sin_phi_) - two_c_cos_phi_;
+  }
+
   ElasticConstants elastic_;
+  // tensile_strength_ is the effective cut-off: min(input, c cot(phi)), +inf if none.
   double sin_phi_, cos_phi_, sin_psi_, cohesion_, tensile_strength_;
+  // Precomputed in the constructor (see mohr_coulomb.cpp for the notation).
+  enum class Cutoff { none, at_apex, below_apex };
+  Cutoff cutoff_ = Cutoff::none;
+  double two_c_cos_phi_ = 0;  // 2 c cos(phi)
+  double s3_corner_ = 0;      // s3 on the yield plane where s1 = s2 = tensile_strength_
+  double lambda_ratio_ = 0;   // lambda / (3 lambda + 2 G), for D^-1
+  double db1_[3] = {}, db2_[3] = {}, db3_[3] = {};  // D b for the three flow vectors
+  double m_ = 0, n12_ = 0, n13_ = 0;                // a_i . D b_j, see return_principal
+  double a1_de1_ = 0, det_f1_r1_ = 0;               // for the yield plane / cut-off edge
 };
 
 }  // namespace lituya::solver

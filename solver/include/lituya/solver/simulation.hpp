@@ -96,6 +96,7 @@ class Simulation {
   void nodal_update(double dt, double damping);
   void nodes_to_points(double dt);
   void remap_momentum();
+  void smooth_volumetric_strain(double dt);
   void update_stress_and_relocate(double dt);
   void report_progress(const Stage& stage, double t, double wall, bool final_line);
 
@@ -112,6 +113,10 @@ class Simulation {
   std::vector<NodalBuffer> thread_buffers_;  // threads 1..T-1
   std::vector<Vec> node_velocity_;
   std::vector<Vec> node_acceleration_;
+  // Volumetric strain smoothing: volume-weighted nodal sums and the smoothed value per point.
+  bool volumetric_smoothing_;
+  std::vector<double> node_volumetric_strain_, node_volume_;
+  std::vector<double> point_volumetric_strain_;
   double flip_fraction_;
   bool musl_;
   double max_velocity_;
