@@ -18,7 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* kUsage = R"(Lituya: two-phase MPM for landslides and the surge waves they raise
+const char* kUsage =
+    R"(Lituya: MPM for granular landslides (dry flows; the water phase is the next milestone)
 
 usage:
   lituya pre    SCENE.toml [-o CASE] [--force]     mesh the scene, seed points, write the case
@@ -64,13 +65,19 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-fs::path default_case(const std::string& scene) { return fs::path(scene).parent_path() / "case"; }
+fs::path default_case(const std::string& scene) {
+  return fs::path(scene).parent_path() / "case";
+}
 
 void require_input(const Options& o, const char* what) {
   if (o.input.empty()) throw po::error(std::string("'lituya ") + o.command + "' needs " + what);
 }
 
 void run_post(const fs::path& case_folder, bool force) {
+  if (!fs::exists(case_folder / "post.toml")) {
+    std::cout << "post: skipped (the scene has no [post] table)\n";
+    return;
+  }
   lituya::post::postprocess(case_folder, case_folder / "post", force);
   std::cout << "post: CSV tables and PNG plots in " << (case_folder / "post").string() << "\n";
 }
@@ -117,7 +124,8 @@ int main(int argc, char** argv) {
       options.threads = o.threads;
       options.overwrite = o.force;
       options.only = o.cases;
-      options.report_folder = o.output.empty() ? fs::path("verification-report") : fs::path(o.output);
+      options.report_folder =
+          o.output.empty() ? fs::path("verification-report") : fs::path(o.output);
       const bool all_passed = lituya::verify::run_verification(options);
       return all_passed ? 0 : 4;
     } else {

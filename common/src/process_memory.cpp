@@ -16,7 +16,11 @@ std::size_t read_status_kib(const std::string& key) {
 }
 }  // namespace
 
-std::size_t peak_memory_bytes() { return read_status_kib("VmHWM:"); }
-std::size_t current_memory_bytes() { return read_status_kib("VmRSS:"); }
+std::size_t peak_memory_bytes() {
+  return read_status_kib("VmHWM:");
+}
+std::size_t current_memory_bytes() {
+  return read_status_kib("VmRSS:");
+}
 
 }  // namespace lituya

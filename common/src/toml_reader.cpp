@@ -15,13 +15,20 @@ int line_of_node(const toml::node& n, int fallback) {
 
 std::string type_name(const toml::node& n) {
   switch (n.type()) {
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a number";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::table: return "a table";
-    default: return "a date or time";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a number";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::table:
+      return "a table";
+    default:
+      return "a date or time";
   }
 }
 
@@ -41,7 +48,9 @@ std::string join(const std::vector<std::string>& items) {
 TomlTable::TomlTable(const toml::table* table, std::string file, std::string path, int line)
     : table_(table), file_(std::move(file)), path_(std::move(path)), line_(line) {}
 
-bool TomlTable::has(std::string_view key) const { return node(key) != nullptr; }
+bool TomlTable::has(std::string_view key) const {
+  return node(key) != nullptr;
+}
 
 const toml::node* TomlTable::node(std::string_view key) const {
   used_.insert(std::string(key));
@@ -83,15 +92,13 @@ double TomlTable::number_in(std::string_view key, double lo, double hi) const {
   double v = number(key);
   if (!(v >= lo && v <= hi)) {
     std::ostringstream m;
-    m << where(key) << " = " << v << " is outside the allowed range [" << lo << ", " << hi
-      << "]";
+    m << where(key) << " = " << v << " is outside the allowed range [" << lo << ", " << hi << "]";
     fail(m.str(), key);
   }
   return v;
 }
 
-double TomlTable::number_in_or(std::string_view key, double lo, double hi,
-                               double fallback) const {
+double TomlTable::number_in_or(std::string_view key, double lo, double hi, double fallback) const {
   return has(key) ? number_in(key, lo, hi) : fallback;
 }
 
@@ -197,8 +204,7 @@ std::vector<TomlTable> TomlTable::tables(std::string_view key) const {
   for (const auto& item : *arr) {
     auto t = item.as_table();
     if (!t) fail(where(key) + " must contain only tables", key);
-    out.emplace_back(t, file_, base + "[" + std::to_string(i++) + "]",
-                     line_of_node(item, line_));
+    out.emplace_back(t, file_, base + "[" + std::to_string(i++) + "]", line_of_node(item, line_));
   }
   return out;
 }
@@ -227,7 +233,9 @@ TomlDocument::TomlDocument(const std::filesystem::path& file) : file_(file.strin
   }
 }
 
-TomlTable TomlDocument::root() const { return TomlTable(table_.get(), file_, "", 1); }
+TomlTable TomlDocument::root() const {
+  return TomlTable(table_.get(), file_, "", 1);
+}
 
 int TomlDocument::check_header(const TomlTable& root, std::string_view format, int max_version) {
   if (!root.has("format"))

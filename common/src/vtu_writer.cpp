@@ -34,7 +34,9 @@ void write_atomically(const std::filesystem::path& file, const std::string& head
 }
 }  // namespace
 
-void VtuWriter::set_points(std::span<const double> xyz) { points_.assign(xyz.begin(), xyz.end()); }
+void VtuWriter::set_points(std::span<const double> xyz) {
+  points_.assign(xyz.begin(), xyz.end());
+}
 
 void VtuWriter::set_vertex_cells() {
   const std::size_t n = point_count();
@@ -47,8 +49,8 @@ void VtuWriter::set_vertex_cells() {
   }
 }
 
-void VtuWriter::set_cells(std::vector<std::int64_t> connectivity,
-                          std::vector<std::int64_t> offsets, std::vector<std::uint8_t> types) {
+void VtuWriter::set_cells(std::vector<std::int64_t> connectivity, std::vector<std::int64_t> offsets,
+                          std::vector<std::uint8_t> types) {
   connectivity_ = std::move(connectivity);
   offsets_ = std::move(offsets);
   types_ = std::move(types);
@@ -73,8 +75,8 @@ void VtuWriter::write(const std::filesystem::path& file) const {
   std::ostringstream head;
   std::vector<Block> blocks;
   std::uint64_t offset = 0;
-  auto declare = [&](const std::string& type, const std::string& name, int comps,
-                     const void* data, std::uint64_t bytes) {
+  auto declare = [&](const std::string& type, const std::string& name, int comps, const void* data,
+                     std::uint64_t bytes) {
     head << "        <DataArray type=\"" << type << "\"";
     if (!name.empty()) head << " Name=\"" << name << "\"";
     head << " NumberOfComponents=\"" << comps << "\" format=\"appended\" offset=\"" << offset
@@ -94,8 +96,8 @@ void VtuWriter::write(const std::filesystem::path& file) const {
        << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
           "header_type=\"UInt64\">\n"
        << "  <UnstructuredGrid>\n"
-       << "    <Piece NumberOfPoints=\"" << point_count() << "\" NumberOfCells=\""
-       << cell_count() << "\">\n";
+       << "    <Piece NumberOfPoints=\"" << point_count() << "\" NumberOfCells=\"" << cell_count()
+       << "\">\n";
   head << "      <PointData>\n";
   declare_arrays(point_data_);
   head << "      </PointData>\n      <CellData>\n";

@@ -73,7 +73,8 @@ TEST(TomlReader, WrongTypeAndRangeAndSyntax) {
 TEST(TomlReader, HeaderFormatAndVersionChecked) {
   auto path = write_file("lituya_toml_header.toml", "format = \"lituya-scene\"\nversion = 9\n");
   lituya::TomlDocument doc(path);
-  std::string msg = error_of([&] { lituya::TomlDocument::check_header(doc.root(), "lituya-scene", 1); });
+  std::string msg =
+      error_of([&] { lituya::TomlDocument::check_header(doc.root(), "lituya-scene", 1); });
   EXPECT_NE(msg.find("version 9 is not supported"), std::string::npos) << msg;
   msg = error_of([&] { lituya::TomlDocument::check_header(doc.root(), "lituya-stages", 1); });
   EXPECT_NE(msg.find("expected \"lituya-stages\""), std::string::npos) << msg;

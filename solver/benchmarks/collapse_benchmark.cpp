@@ -87,8 +87,8 @@ void run(int segments, int steps, int threads, double cell) {
       "  point-steps/s: median %.3e (min %.3e, max %.3e)\n"
       "  memory: solver storage %.0f B/point; process peak %.1f MiB, growth %.0f B/point\n",
       dim, n, sim.mesh().cell_count(), sim.mesh().node_count(), threads, segments, steps, median,
-      rates.front(), rates.back(), static_cast<double>(sim.storage_bytes()) / n,
-      peak / 1048576.0, static_cast<double>(peak - memory_before) / n);
+      rates.front(), rates.back(), static_cast<double>(sim.storage_bytes()) / n, peak / 1048576.0,
+      static_cast<double>(peak - memory_before) / n);
 }
 
 }  // namespace
@@ -97,17 +97,24 @@ int main(int argc, char** argv) {
   int dim = 2, segments = 5, steps = 50, threads = 1;
   double cell = -1;
   for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--dim")) dim = std::atoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--segments")) segments = std::atoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--steps")) steps = std::atoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--threads")) threads = std::atoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--cell")) cell = std::atof(argv[i + 1]);
+    if (!std::strcmp(argv[i], "--dim"))
+      dim = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--segments"))
+      segments = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--steps"))
+      steps = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--threads"))
+      threads = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--cell"))
+      cell = std::atof(argv[i + 1]);
     else {
       std::fprintf(stderr, "unknown option %s\n", argv[i]);
       return 1;
     }
   }
-  if (dim == 2) run<2>(segments, steps, threads, cell > 0 ? cell : 0.005);
-  else run<3>(segments, steps, threads, cell > 0 ? cell : 0.02);
+  if (dim == 2)
+    run<2>(segments, steps, threads, cell > 0 ? cell : 0.005);
+  else
+    run<3>(segments, steps, threads, cell > 0 ? cell : 0.02);
   return 0;
 }

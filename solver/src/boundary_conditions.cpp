@@ -31,8 +31,9 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
   constraint.friction = bc.friction;
   constraint.directions = bc.directions;
   if (facets.empty())
-    throw InputError(file, 0, "boundary '" + bc.name + "': its group '" + bc.group +
-                                  "' has no facets in the mesh");
+    throw InputError(
+        file, 0,
+        "boundary '" + bc.name + "': its group '" + bc.group + "' has no facets in the mesh");
   // Cells around each node, to find the cells adjacent to a facet.
   std::vector<std::vector<int>> cells_of_node(mesh.node_count());
   for (std::size_t c = 0; c < mesh.cell_count(); ++c)
@@ -46,17 +47,20 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
     for (int c : cells_of_node[facet[0]]) {
       bool has_all = true;
       for (int n : facet)
-        has_all = has_all && std::find(mesh.cell_nodes[c].begin(), mesh.cell_nodes[c].end(),
-                                       n) != mesh.cell_nodes[c].end();
+        has_all = has_all && std::find(mesh.cell_nodes[c].begin(), mesh.cell_nodes[c].end(), n) !=
+                                 mesh.cell_nodes[c].end();
       if (has_all) adjacent.push_back(c);
     }
     if (adjacent.empty())
-      throw InputError(file, 0, "boundary '" + bc.name + "': a facet of group '" + bc.group +
-                                    "' is not a face of any background cell");
-    if (adjacent.size() > 1 && bc.type == BoundaryType::kContact)
       throw InputError(file, 0,
-                       "boundary '" + bc.name + "' (contact) lies inside the mesh, where there "
-                       "is no outside to point its normal to: use type \"roller\" or \"fixed\"");
+                       "boundary '" + bc.name + "': a facet of group '" + bc.group +
+                           "' is not a face of any background cell");
+    if (adjacent.size() > 1 && bc.type == BoundaryType::kContact)
+      throw InputError(
+          file, 0,
+          "boundary '" + bc.name +
+              "' (contact) lies inside the mesh, where there "
+              "is no outside to point its normal to: use type \"roller\" or \"fixed\"");
     // Orient the normal away from the (first) adjacent cell's centroid: outward.
     Vec centroid = Vec::Zero();
     for (int n : mesh.cell_nodes[adjacent[0]]) centroid += mesh.node_position[n];

@@ -94,8 +94,7 @@ Stage read_stage(const TomlTable& t) {
     s.reset_displacement = t.boolean_or("reset_displacement", true);
   } else {
     for (const char* k : {"kinetic_energy_ratio", "reset_displacement"})
-      if (t.has(k))
-        t.fail(std::string("'") + k + "' applies only to type = \"quasi-static\"", k);
+      if (t.has(k)) t.fail(std::string("'") + k + "' applies only to type = \"quasi-static\"", k);
     s.reset_displacement = false;
   }
   t.finish();
@@ -105,7 +104,7 @@ Stage read_stage(const TomlTable& t) {
 SolverSettings read_solver_settings(const TomlTable& t) {
   SolverSettings s;
   s.scheme = t.choice_or("scheme", {"musl", "usl"}, "musl") == "musl" ? TransferScheme::kMUSL
-                                                                       : TransferScheme::kUSL;
+                                                                      : TransferScheme::kUSL;
   s.flip_fraction = t.number_in_or("flip_fraction", 0.0, 1.0, s.flip_fraction);
   s.max_velocity = t.number_in_or("max_velocity", 1e-9, 1e9, s.max_velocity);
   s.volumetric_smoothing = t.boolean_or("volumetric_smoothing", s.volumetric_smoothing);
@@ -134,13 +133,13 @@ OutputSettings read_output_settings(const TomlTable& t) {
 }
 
 toml::table to_toml(const Material& m) {
-  toml::table t{{"name", m.name},
-                {"model", m.model == MaterialModel::kMohrCoulomb ? "mohr-coulomb"
-                                                                 : "linear-elastic"},
-                {"solid_density", m.solid_density},
-                {"porosity", m.porosity},
-                {"youngs_modulus", m.youngs_modulus},
-                {"poisson_ratio", m.poisson_ratio}};
+  toml::table t{
+      {"name", m.name},
+      {"model", m.model == MaterialModel::kMohrCoulomb ? "mohr-coulomb" : "linear-elastic"},
+      {"solid_density", m.solid_density},
+      {"porosity", m.porosity},
+      {"youngs_modulus", m.youngs_modulus},
+      {"poisson_ratio", m.poisson_ratio}};
   if (m.model == MaterialModel::kMohrCoulomb) {
     t.insert("friction_angle", m.friction_angle);
     t.insert("dilatancy_angle", m.dilatancy_angle);

@@ -33,15 +33,16 @@ vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const std::string& file) {
 
 vtkDataArray* required_array(vtkUnstructuredGrid* grid, bool point_data, const char* name,
                              int components, const std::string& file) {
-  vtkDataArray* a = point_data ? grid->GetPointData()->GetArray(name)
-                               : grid->GetCellData()->GetArray(name);
+  vtkDataArray* a =
+      point_data ? grid->GetPointData()->GetArray(name) : grid->GetCellData()->GetArray(name);
   if (!a)
-    throw InputError(file, 0, std::string("missing ") + (point_data ? "point" : "cell") +
-                                  " data array '" + name + "'");
+    throw InputError(
+        file, 0,
+        std::string("missing ") + (point_data ? "point" : "cell") + " data array '" + name + "'");
   if (a->GetNumberOfComponents() != components)
-    throw InputError(file, 0, std::string("array '") + name + "' must have " +
-                                  std::to_string(components) + " components, has " +
-                                  std::to_string(a->GetNumberOfComponents()));
+    throw InputError(file, 0,
+                     std::string("array '") + name + "' must have " + std::to_string(components) +
+                         " components, has " + std::to_string(a->GetNumberOfComponents()));
   return a;
 }
 
@@ -75,27 +76,29 @@ LoadedCase<dim> load_case(const CaseDescription& description) {
     } else if (type == facet_type && ids->GetNumberOfIds() == dim) {
       const int g = static_cast<int>(group->GetTuple1(c));
       if (g < 0 || g >= static_cast<int>(facets_of_group.size()))
-        throw InputError(gfile, 0, "boundary facet " + std::to_string(c) + " has group " +
-                                       std::to_string(g) + ", not a group of stages.toml");
+        throw InputError(gfile, 0,
+                         "boundary facet " + std::to_string(c) + " has group " + std::to_string(g) +
+                             ", not a group of stages.toml");
       std::array<int, dim> f;
       for (int k = 0; k < dim; ++k) f[k] = static_cast<int>(ids->GetId(k));
       facets_of_group[g].push_back(f);
     } else {
-      throw InputError(gfile, 0, "cell " + std::to_string(c) + " has VTK type " +
-                                     std::to_string(type) + "; a " + std::to_string(dim) +
-                                     "D case expects linear " +
-                                     (dim == 2 ? "triangles (5) and lines (3)"
-                                               : "tetrahedra (10) and triangles (5)"));
+      throw InputError(
+          gfile, 0,
+          "cell " + std::to_string(c) + " has VTK type " + std::to_string(type) + "; a " +
+              std::to_string(dim) + "D case expects linear " +
+              (dim == 2 ? "triangles (5) and lines (3)" : "tetrahedra (10) and triangles (5)"));
     }
   }
   if (mesh.cell_nodes.empty())
     throw InputError(gfile, 0, "has no background cells of dimension " + std::to_string(dim));
   const int invalid = mesh.build();
   if (invalid >= 0)
-    throw InputError(gfile, 0, "background cell " + std::to_string(invalid) +
-                                   " is inverted or degenerate (volume " +
-                                   std::to_string(mesh.cell_volume[invalid]) +
-                                   "); fix the mesh (gmsh: check element orientation)");
+    throw InputError(gfile, 0,
+                     "background cell " + std::to_string(invalid) +
+                         " is inverted or degenerate (volume " +
+                         std::to_string(mesh.cell_volume[invalid]) +
+                         "); fix the mesh (gmsh: check element orientation)");
 
   // Boundary conditions from the facets of their groups.
   for (const BoundaryCondition& bc : description.boundaries) {
@@ -126,9 +129,10 @@ LoadedCase<dim> load_case(const CaseDescription& description) {
     points.material[p] = static_cast<int>(material->GetTuple1(p));
     if (points.material[p] < 0 ||
         points.material[p] >= static_cast<int>(description.materials.size()))
-      throw InputError(pfile, 0, "point " + std::to_string(p) + " has material " +
-                                     std::to_string(points.material[p]) +
-                                     ", not a material of materials.toml");
+      throw InputError(pfile, 0,
+                       "point " + std::to_string(p) + " has material " +
+                           std::to_string(points.material[p]) +
+                           ", not a material of materials.toml");
     points.volume[p] = volume->GetTuple1(p);
     points.mass[p] = mass->GetTuple1(p);
     if (!(points.volume[p] > 0) || !(points.mass[p] > 0))

@@ -43,9 +43,11 @@
 // multipliers (or vertex flow cone coefficients) >= 0, and the result admissible and still
 // ordered s1 >= s2 >= s3. The candidates' regions (face, edge and vertex "return regions"
 // bounded by the planes spanned by the edges and the flow directions D b, as in Clausen,
-// Damkilde & Andersen 2006/2007) tile the space outside the admissible prism, so exactly
-// one candidate passes except on region boundaries, where neighbouring candidates give the
-// same stress. Order:
+// Damkilde & Andersen 2006/2007) tile the space outside the admissible set, so one candidate
+// passes; on region boundaries neighbouring candidates give the same stress. For psi = phi
+// the result is the closest admissible point in the energy norm (checked in the tests).
+// Trying candidates instead of computing the boundary planes first costs a few extra flops
+// for edge and vertex returns only, and needs no special case for phi = 0 or c = 0. Order:
 //   1. main plane F1                      (1 multiplier)
 //   2. edge s1 = s2: F1 + F2              (triaxial compression meridian, 2x2)
 //   3. edge s2 = s3: F1 + F3              (triaxial extension meridian, 2x2)
@@ -89,8 +91,7 @@ double dot3(const double a[3], const double b[3]) {
 }
 }  // namespace
 
-ElasticConstants ElasticConstants::from_young_poisson(double youngs_modulus,
-                                                      double poisson_ratio) {
+ElasticConstants ElasticConstants::from_young_poisson(double youngs_modulus, double poisson_ratio) {
   if (!(youngs_modulus > 0) || !(poisson_ratio > -1 && poisson_ratio < 0.5)) {
     throw std::invalid_argument(
         "elastic constants: need Young's modulus > 0 and -1 < Poisson's ratio < 0.5, got E = " +
@@ -107,8 +108,8 @@ void elastic_update(const ElasticConstants& elastic, Voigt6& stress,
   // Isotropic Hooke's law, eq. (19) with d_eps_p = 0: d_sigma = lambda tr(d_eps) I + 2 G d_eps;
   // the shear entries are engineering strains, hence G (not 2 G) times gamma.
   const double g = elastic.shear_modulus;
-  const double volumetric = elastic.lame_lambda *
-                            (strain_increment[0] + strain_increment[1] + strain_increment[2]);
+  const double volumetric =
+      elastic.lame_lambda * (strain_increment[0] + strain_increment[1] + strain_increment[2]);
   stress[0] += volumetric + 2 * g * strain_increment[0];
   stress[1] += volumetric + 2 * g * strain_increment[1];
   stress[2] += volumetric + 2 * g * strain_increment[2];
@@ -215,8 +216,7 @@ void MohrCoulomb::return_principal(const double t[3], double r[3]) const {
   double best_violation = kInf;
   auto accept = [&](double x0, double x1, double x2, double flow_min) {
     const double x[3] = {x0, x1, x2};
-    const double violation =
-        std::max({-flow_min, x1 - x0, x2 - x1, yield_sorted(x), x0 - st});
+    const double violation = std::max({-flow_min, x1 - x0, x2 - x1, yield_sorted(x), x0 - st});
     if (violation < best_violation) {
       best_violation = violation;
       r[0] = x0;
@@ -307,8 +307,7 @@ void MohrCoulomb::return_principal(const double t[3], double r[3]) const {
     double q[3];
     vertex_flow(x, q);
     const double al = -q[2] / (1 - sp);
-    if (accept(x[0], x[1], x[2], std::min({q[0], q[1], al, q[0] + q[1] - al * (1 + sp)})))
-      return;
+    if (accept(x[0], x[1], x[2], std::min({q[0], q[1], al, q[0] + q[1] - al * (1 + sp)}))) return;
   }
   {
     // (st, s3c, s3c), flows b1, b3, e1: al1 = -q3 / (1 - sp), al3 = -q2 / (1 - sp),
@@ -329,6 +328,7 @@ void MohrCoulomb::return_principal(const double t[3], double r[3]) const {
 }
 
 double MohrCoulomb::update(Voigt6& stress, const Voigt6& strain_increment) const {
+  // Elastic predictor: eq. (19) with the whole increment taken as elastic.
   Voigt6 trial = stress;
   elastic_update(elastic_, trial, strain_increment);
 
@@ -339,6 +339,14 @@ double MohrCoulomb::update(Voigt6& stress, const Voigt6& strain_increment) const
     const double half_diff = 0.5 * (trial[0] - trial[1]);
     const double rad = std::sqrt(half_diff * half_diff + trial[3] * trial[3]);
     const double sa = cn + rad, sb = cn - rad, sz = trial[2];
+    // Elastic check first: f only needs the extreme values (branch-free max / min).
+    {
+      const double extremes[3] = {std::max(sa, sz), 0.0, std::min(sb, sz)};
+      if (yield_sorted(extremes) <= 0 && extremes[0] <= tensile_strength_) {
+        stress = trial;
+        return 0;
+      }
+    }
     double t[3];
     int z_position;  // where sz sits in the sorted triple
     if (sz >= sa) {
@@ -347,10 +355,6 @@ double MohrCoulomb::update(Voigt6& stress, const Voigt6& strain_increment) const
       t[0] = sa, t[1] = sb, t[2] = sz, z_position = 2;
     } else {
       t[0] = sa, t[1] = sz, t[2] = sb, z_position = 1;
-    }
-    if (yield_sorted(t) <= 0 && t[0] <= tensile_strength_) {
-      stress = trial;
-      return 0;
     }
     double r[3];
     return_principal(t, r);
@@ -370,8 +374,8 @@ double MohrCoulomb::update(Voigt6& stress, const Voigt6& strain_increment) const
     return equivalent_plastic_strain(t, r);
   }
 
-  // General 3D path. Quick elastic check first, without any eigen-solve: with the mean p and
-  // J2, s1 - s3 <= 2 sqrt(J2), |s2 - p| <= sqrt(J2 / 3) and s1 <= p + 2 sqrt(J2 / 3), so
+  // General 3D path. Quick elastic check first, without solving the cubic: with the mean p
+  // and J2, s1 - s3 <= 2 sqrt(J2), |s2 - p| <= sqrt(J2 / 3) and s1 <= p + 2 sqrt(J2 / 3), so
   // f <= 2 sqrt(J2) + sin(phi) (2 p + sqrt(J2 / 3)) - 2 c cos(phi).
   const double mean = (trial[0] + trial[1] + trial[2]) / 3.0;
   const double dx = trial[0] - mean, dy = trial[1] - mean, dz = trial[2] - mean;
@@ -384,20 +388,20 @@ double MohrCoulomb::update(Voigt6& stress, const Voigt6& strain_increment) const
     stress = trial;
     return 0;
   }
-  // Closed-form principal values (cheap, slightly inaccurate near repeated values, hence the
-  // margin).
+  // Principal values from the cubic: cheap, but off by up to ~1e-8 sqrt(J2) near repeated
+  // values, hence the margin; states closer to the surfaces get the accurate values.
+  const DeviatoricCubic cubic = solve_deviatoric_cubic(trial);
   {
-    const Eigen::Vector3d s = principal_values_fast(trial);
-    const double sorted[3] = {s[0], s[1], s[2]};
+    const double sorted[3] = {cubic.value(0), 0.0, cubic.value(2)};
     const double margin = kFastCheckMargin * sqrt_j2;
-    if (yield_sorted(sorted) <= -margin && s[0] <= tensile_strength_ - margin) {
+    if (yield_sorted(sorted) <= -margin && sorted[0] <= tensile_strength_ - margin) {
       stress = trial;
       return 0;
     }
   }
   Eigen::Vector3d values;
   Eigen::Matrix3d vectors;
-  principal_decomposition(trial, values, vectors);
+  principal_decomposition(cubic, values, vectors);
   const double t[3] = {values[0], values[1], values[2]};
   if (yield_sorted(t) <= 0 && t[0] <= tensile_strength_) {
     stress = trial;
@@ -406,8 +410,9 @@ double MohrCoulomb::update(Voigt6& stress, const Voigt6& strain_increment) const
   double r[3];
   return_principal(t, r);
   // sigma = sum r_i v_i v_i^T = r2 I + (r1 - r2) v1 v1^T + (r3 - r2) v3 v3^T (v orthonormal);
-  // this form is exact for isotropic results (apex, vertices) and only needs the directions
-  // of the extreme values, which are the well-defined ones on the edges.
+  // this form is exact for isotropic results (apex, vertices), and on an edge one of the two
+  // differences vanishes, so only the direction of the distinct value (the well-defined one)
+  // enters.
   const Eigen::Vector3d v1 = vectors.col(0), v3 = vectors.col(2);
   const double d1 = r[0] - r[1], d3 = r[2] - r[1];
   stress[0] = r[1] + d1 * v1[0] * v1[0] + d3 * v3[0] * v3[0];

@@ -55,7 +55,8 @@ void OutputWriter<dim>::write_points(const Simulation<dim>& simulation,
   w.set_points(as_xyz<dim>(p.position));
   w.set_vertex_cells();
   w.add_point_data("id", p.id);
-  if (wants(settings_, "displacement")) w.add_point_data("displacement", 3, as_xyz<dim>(p.displacement));
+  if (wants(settings_, "displacement"))
+    w.add_point_data("displacement", 3, as_xyz<dim>(p.displacement));
   if (wants(settings_, "velocity")) w.add_point_data("velocity", 3, as_xyz<dim>(p.velocity));
   if (wants(settings_, "stress")) {
     std::vector<double> s(6 * p.size());

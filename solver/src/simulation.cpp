@@ -36,8 +36,8 @@ inline Voigt6 strain_increment(const Eigen::Matrix2d& l, double dt) {
 }
 inline Voigt6 strain_increment(const Eigen::Matrix3d& l, double dt) {
   Voigt6 e;
-  e << l(0, 0) * dt, l(1, 1) * dt, l(2, 2) * dt, (l(0, 1) + l(1, 0)) * dt,
-      (l(1, 2) + l(2, 1)) * dt, (l(0, 2) + l(2, 0)) * dt;
+  e << l(0, 0) * dt, l(1, 1) * dt, l(2, 2) * dt, (l(0, 1) + l(1, 0)) * dt, (l(1, 2) + l(2, 1)) * dt,
+      (l(0, 2) + l(2, 0)) * dt;
   return e;
 }
 
@@ -80,8 +80,7 @@ std::string format_vector(const double* v, int n) {
 }  // namespace
 
 template <int dim>
-Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh,
-                            MaterialPoints<dim> points,
+Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, MaterialPoints<dim> points,
                             std::vector<NodalConstraint<dim>> constraints)
     : description_(std::move(description)),
       mesh_(std::move(mesh)),
@@ -97,9 +96,9 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh,
     data.model = m.model;
     data.elastic = ElasticConstants::from_young_poisson(m.youngs_modulus, m.poisson_ratio);
     if (m.model == MaterialModel::kMohrCoulomb)
-      data.mohr_coulomb = std::make_unique<MohrCoulomb>(
-          m.youngs_modulus, m.poisson_ratio, m.friction_angle, m.dilatancy_angle, m.cohesion,
-          m.tensile_strength);
+      data.mohr_coulomb =
+          std::make_unique<MohrCoulomb>(m.youngs_modulus, m.poisson_ratio, m.friction_angle,
+                                        m.dilatancy_angle, m.cohesion, m.tensile_strength);
     data.wave_speed = std::sqrt(data.elastic.constrained_modulus() / m.dry_density());
     materials_.push_back(std::move(data));
   }
@@ -390,15 +389,16 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
       << description_.materials[points_.material[p]].name << "') at "
       << format_vector(points_.position[p].data(), dim) << ": ";
     if (bad_kind == 1)
-      m << "velocity or stress is not finite (velocity " << format_vector(points_.velocity[p].data(), dim)
-        << ", stress " << format_vector(points_.stress[p].data(), 6)
+      m << "velocity or stress is not finite (velocity "
+        << format_vector(points_.velocity[p].data(), dim) << ", stress "
+        << format_vector(points_.stress[p].data(), 6)
         << "); the run went unstable: reduce the Courant number or check the material";
     else if (bad_kind == 2)
-      m << "speed " << points_.velocity[p].norm() << " m/s exceeds [solver] max_velocity = "
-        << max_velocity_ << " m/s; the run is probably unstable (reduce the Courant number)";
+      m << "speed " << points_.velocity[p].norm()
+        << " m/s exceeds [solver] max_velocity = " << max_velocity_
+        << " m/s; the run is probably unstable (reduce the Courant number)";
     else
-      m << "left the background mesh (velocity "
-        << format_vector(points_.velocity[p].data(), dim)
+      m << "left the background mesh (velocity " << format_vector(points_.velocity[p].data(), dim)
         << " m/s); extend the mesh or close the boundary it crossed";
     throw RunError(m.str());
   }
@@ -419,7 +419,8 @@ template <int dim>
 void Simulation<dim>::map_to_grid() {
   points_to_nodes(Transfer::kMassMomentumForce);
   for (std::size_t i = 0; i < mesh_.node_count(); ++i)
-    node_velocity_[i] = grid_.mass[i] > 1e-14 ? Vec(grid_.momentum[i] / grid_.mass[i]) : Vec::Zero();
+    node_velocity_[i] =
+        grid_.mass[i] > 1e-14 ? Vec(grid_.momentum[i] / grid_.mass[i]) : Vec::Zero();
 }
 
 template <int dim>
@@ -427,17 +428,17 @@ double Simulation<dim>::kinetic_energy() const {
   double e = 0;
   const std::size_t n = points_.size();
 #pragma omp parallel for num_threads(threads_) reduction(+ : e) schedule(static)
-  for (std::size_t p = 0; p < n; ++p) e += 0.5 * points_.mass[p] * points_.velocity[p].squaredNorm();
+  for (std::size_t p = 0; p < n; ++p)
+    e += 0.5 * points_.mass[p] * points_.velocity[p].squaredNorm();
   return e;
 }
 
 template <int dim>
 std::size_t Simulation<dim>::storage_bytes() const {
   const std::size_t nodes = mesh_.node_count() * (sizeof(double) + 4 * sizeof(Vec));
-  const std::size_t cells =
-      mesh_.cell_count() * (2 * sizeof(typename Mesh<dim>::CellNodes) +
-                            sizeof(Eigen::Matrix<double, dim, dim>) +
-                            (dim + 1) * sizeof(Vec) + 2 * sizeof(double));
+  const std::size_t cells = mesh_.cell_count() * (2 * sizeof(typename Mesh<dim>::CellNodes) +
+                                                  sizeof(Eigen::Matrix<double, dim, dim>) +
+                                                  (dim + 1) * sizeof(Vec) + 2 * sizeof(double));
   return points_.bytes() + shape_.size() * sizeof(Shape) + nodes + cells +
          thread_buffers_.size() * mesh_.node_count() * (sizeof(double) + 2 * sizeof(Vec));
 }
@@ -500,9 +501,9 @@ StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback&
     }
     if (output_now) {
       if (on_output) on_output(stage, t, output_index++);
-      next_output = std::min(next_output + (stage.output_interval > 0 ? stage.output_interval
-                                                                      : stage.duration),
-                             stage.duration);
+      next_output = std::min(
+          next_output + (stage.output_interval > 0 ? stage.output_interval : stage.duration),
+          stage.duration);
     }
     report_progress(stage, t, wall_seconds() - start_wall, false);
   }

@@ -20,8 +20,9 @@ std::string describe(const StageReport& r, std::size_t n_points) {
   std::ostringstream s;
   s << std::setprecision(4) << "stage '" << r.stage << "': " << r.steps << " steps, "
     << r.simulated_time << " s simulated in " << r.wall_time << " s wall, "
-    << r.point_steps_per_second / 1e6 << " M point-steps/s (" << n_points << " points), peak memory "
-    << static_cast<double>(r.peak_memory) / (1024.0 * 1024.0) << " MiB; stopped: " << r.stop_reason;
+    << r.point_steps_per_second / 1e6 << " M point-steps/s (" << n_points
+    << " points), peak memory " << static_cast<double>(r.peak_memory) / (1024.0 * 1024.0)
+    << " MiB; stopped: " << r.stop_reason;
   return s.str();
 }
 

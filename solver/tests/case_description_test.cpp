@@ -90,7 +90,8 @@ TEST(CaseDescription, StageReferencingUnknownBoundaryIsAnError) {
 
 TEST(CaseDescription, FixityDirectionMustExistInDimension) {
   auto path = std::filesystem::temp_directory_path() / "lituya_fixity_test.toml";
-  std::ofstream(path) << "[[boundary]]\ngroup = \"gate\"\ntype = \"fixity\"\ndirections = [\"z\"]\n";
+  std::ofstream(path)
+      << "[[boundary]]\ngroup = \"gate\"\ntype = \"fixity\"\ndirections = [\"z\"]\n";
   lituya::TomlDocument doc(path);
   EXPECT_THROW(read_boundary(doc.root().tables("boundary").at(0), 2), lituya::InputError);
   EXPECT_NO_THROW(read_boundary(doc.root().tables("boundary").at(0), 3));

@@ -7,8 +7,8 @@
 
 namespace {
 
-using lituya::solver::ElasticConstants;
 using lituya::solver::elastic_update;
+using lituya::solver::ElasticConstants;
 using lituya::solver::Voigt6;
 
 TEST(LinearElastic, LameConstantsFromYoungPoisson) {

@@ -6,8 +6,8 @@
 
 namespace {
 
-using lituya::solver::Mesh;
 using lituya::solver::make_box_mesh;
+using lituya::solver::Mesh;
 
 TEST(Mesh, BoxMesh2DVolumesAndNeighbours) {
   auto mesh = make_box_mesh<2>({0.0, 0.0}, {2.0, 1.0}, {8, 4});

@@ -8,20 +8,20 @@
 #include <random>
 #include <stdexcept>
 
+#include <gtest/gtest.h>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
-#include <gtest/gtest.h>
 
 #include "lituya/solver/mohr_coulomb.hpp"
 #include "lituya/solver/principal_stresses.hpp"
 
 namespace {
 
-using lituya::solver::MohrCoulomb;
-using lituya::solver::Voigt6;
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
+using lituya::solver::MohrCoulomb;
+using lituya::solver::Voigt6;
 
 constexpr double kPa = 1e3;
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -70,7 +70,9 @@ Matrix3d random_rotation(std::mt19937& rng) {
   Eigen::Quaterniond q(n(rng), n(rng), n(rng), n(rng));
   return q.normalized().toRotationMatrix();
 }
-double max_abs(const Voigt6& v) { return v.cwiseAbs().maxCoeff(); }
+double max_abs(const Voigt6& v) {
+  return v.cwiseAbs().maxCoeff();
+}
 
 // Independent closed forms in the principal frame (tension positive, s1 >= s2 >= s3).
 struct Reference {
@@ -147,8 +149,8 @@ TEST(MohrCoulomb, YieldFunctionIsMinusTwiceThePaperForm) {
   EXPECT_NEAR(model.yield_function(s), expected, 1e-9);
   // Paper eq. (21), compression negative, sigma1 <= sigma3:
   // f = 1/2 (s1 - s3) - 1/2 (s1 + s3) sin(phi) + c cos(phi) with s1 = -300, s3 = -100.
-  const double paper =
-      0.5 * (-200 * kPa) - 0.5 * (-400 * kPa) * std::sin(30 * kDeg) + 10 * kPa * std::cos(30 * kDeg);
+  const double paper = 0.5 * (-200 * kPa) - 0.5 * (-400 * kPa) * std::sin(30 * kDeg) +
+                       10 * kPa * std::cos(30 * kDeg);
   EXPECT_NEAR(model.yield_function(s), -2 * paper, 1e-9);
   // Invariant under rotation (3D principal values).
   std::mt19937 rng(7);
@@ -341,6 +343,70 @@ Matrix3d rotation_about_z(double angle) {
   return Eigen::AngleAxisd(angle, Vector3d::UnitZ()).toRotationMatrix();
 }
 
+// Corners of the cut-off below the apex (c = 20 kPa, phi = 30, psi = 10, sigma_t = 5 kPa):
+// each trial is built from the expected corner x and positive multipliers of the flows
+// active there, t = x + D sum(dl_i flow_i), so the return must land exactly on x:
+//  - edge R1 + R2:   x = (st, st, -30 kPa),  flows e1, e2
+//  - vertex A:       x = (st, st, s3c),      flows b(1,3), b(2,3), e1, e2
+//  - vertex B:       x = (st, s3c, s3c),     flows b(1,3), b(1,2), e1
+//  - vertex C:       x = (st, st, st),       flows e1, e2, e3
+// with s3c = (st (1 + sf) - 2 c cf) / (1 - sf), s3 on the yield plane for s1 = st.
+TEST(MohrCoulomb, TensionCutOffEdgesAndVertices) {
+  const double e = 10e6, nu = 0.2, phi = 30, psi = 10, c = 20 * kPa, st = 5 * kPa;
+  const MohrCoulomb model(e, nu, phi, psi, c, st);
+  const Reference ref(e, nu, phi, psi, c);
+  const Matrix3d d = ref.d();
+  const double s3c = (st * (1 + ref.sf) - 2 * c * ref.cf) / (1 - ref.sf);
+  const Vector3d e1 = Vector3d::UnitX(), e2 = Vector3d::UnitY(), e3 = Vector3d::UnitZ();
+  struct Case {
+    const char* name;
+    Vector3d x, flow;  // flow: sum of dl_i flow_i (plastic strain increment)
+  };
+  const double k = 1e-3;
+  const Case cases[] = {
+      {"edge R1+R2", {st, st, -30 * kPa}, k * (1.0 * e1 + 0.5 * e2)},
+      {"vertex A", {st, st, s3c}, k * (ref.b(0, 2) + 0.3 * ref.b(1, 2) + 0.2 * e1 + 0.1 * e2)},
+      {"vertex A, MC flows only", {st, st, s3c}, k * (ref.b(0, 2) + ref.b(1, 2))},
+      {"vertex B", {st, s3c, s3c}, k * (ref.b(0, 2) + 0.4 * ref.b(0, 1) + 0.2 * e1)},
+      {"vertex B, MC flows only", {st, s3c, s3c}, k * (0.5 * ref.b(0, 2) + ref.b(0, 1))},
+      {"vertex C", {st, st, st}, k * (0.2 * e1 + 0.5 * e2 + 1.0 * e3)},
+  };
+  std::mt19937 rng(47);
+  const Matrix3d q = random_rotation(rng);
+  for (const Case& cs : cases) {
+    const Vector3d t = cs.x + d * cs.flow;
+    for (const Matrix3d& rot : {Matrix3d(Matrix3d::Identity()), q}) {
+      Voigt6 s = Voigt6::Zero();
+      const double eps_p =
+          model.update(s, rotate_strain(rot, ref.strain_between(Vector3d::Zero(), t)));
+      const Vector3d got = principal(s);
+      for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[i], cs.x[i], 1e-9 * 100 * kPa) << cs.name;
+      EXPECT_NEAR(eps_p, std::sqrt(2.0 / 3.0) * cs.flow.norm(), 1e-12) << cs.name;
+    }
+  }
+}
+
+// With c > 0 and the cut-off at the apex c cot(phi), the apex takes any plastic strain in the
+// cone of the Mohr-Coulomb flows b(i, j) and the Rankine flows e_i; built as above.
+TEST(MohrCoulomb, ApexFlowCone) {
+  const double e = 10e6, nu = 0.3, phi = 30, psi = 10, c = 10 * kPa;
+  const MohrCoulomb model(e, nu, phi, psi, c, kInf);
+  const Reference ref(e, nu, phi, psi, c);
+  const Vector3d apex = Vector3d::Constant(c / std::tan(phi * kDeg));
+  const double k = 1e-3;
+  // Mohr-Coulomb flows only (volumetric 2 sin(psi) per unit, less than isotropic tension):
+  // compressive s3 direction with dilatant flow; and a mixed one.
+  const Vector3d flows[] = {k * (ref.b(0, 2) + ref.b(1, 2)), k * (ref.b(0, 2) + 0.5 * ref.b(0, 1)),
+                            k * (ref.b(0, 2) + 0.5 * Vector3d::UnitY())};
+  for (const Vector3d& flow : flows) {
+    const Vector3d t = apex + ref.d() * flow;
+    Voigt6 s = Voigt6::Zero();
+    const double eps_p = model.update(s, ref.strain_between(Vector3d::Zero(), t));
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(s[i], apex[i], 1e-9 * 100 * kPa);
+    EXPECT_NEAR(eps_p, std::sqrt(2.0 / 3.0) * flow.norm(), 1e-12);
+  }
+}
+
 TEST(MohrCoulomb, ZeroDilatancyGivesNoPlasticVolumeChange) {
   // psi = 0: the plastic strain is purely deviatoric, so the mean stress responds elastically
   // to the whole volumetric strain increment, d p = K tr(d_eps), although the return changes
@@ -386,9 +452,9 @@ TEST(MohrCoulomb, PlasticStrainFollowsThePotential) {
     ASSERT_GT(eps_eq, 0);
     // Plastic strain tensor from the stress difference with the isotropic compliance.
     const Matrix3d ds = stress_tensor(trial - s);
-    const Matrix3d dp = (ds - ref.lambda / (3 * ref.lambda + 2 * ref.g) * ds.trace() *
-                                  Matrix3d::Identity()) /
-                        (2 * ref.g);
+    const Matrix3d dp =
+        (ds - ref.lambda / (3 * ref.lambda + 2 * ref.g) * ds.trace() * Matrix3d::Identity()) /
+        (2 * ref.g);
     EXPECT_NEAR(eps_eq, std::sqrt(2.0 / 3.0 * (dp.array() * dp.array()).sum()), 1e-12);
     // In the trial frame: principal plastic strains proportional to b.
     Eigen::SelfAdjointEigenSolver<Matrix3d> eig(stress_tensor(trial));
@@ -455,14 +521,12 @@ TEST(MohrCoulomb, TriaxialCompressionPeakDeviator) {
       const MohrCoulomb model(10e6, 0.3, 30, 5, c, kInf);
       const double lateral = -100 * kPa;
       const double sf = std::sin(30 * kDeg);
-      const double axial_failure =
-          (lateral * (1 + sf) - 2 * c * std::cos(30 * kDeg)) / (1 - sf);
+      const double axial_failure = (lateral * (1 + sf) - 2 * c * std::cos(30 * kDeg)) / (1 - sf);
       Voigt6 s = rotate_stress(rot, diagonal(lateral, lateral, lateral));
       double peak_q = 0;
       for (int step = 0; step < 1000; ++step) {
         mixed_step(
-            model, s,
-            [&](double x) { return rotate_strain(rot, diagonal(x, x, -5e-5)); },
+            model, s, [&](double x) { return rotate_strain(rot, diagonal(x, x, -5e-5)); },
             [&](const Voigt6& st) { return rotate_stress(rot.transpose(), st)[0]; }, lateral,
             model.elastic().constrained_modulus());
         const Voigt6 local = rotate_stress(rot.transpose(), s);
@@ -496,7 +560,6 @@ TEST(MohrCoulomb, RotationInvarianceAndPlaneStrainFastPath) {
       plastic += e1 > 0;
     }
     EXPECT_GT(plastic, 50);
-    printf("PLASTIC3D %d\n", plastic);
   }
   // (b) plane strain (fast path) against the same path seen in a rotated frame, where the
   // out-of-plane shears are non-zero (general 3D path). Compared step by step.
@@ -519,7 +582,6 @@ TEST(MohrCoulomb, RotationInvarianceAndPlaneStrainFastPath) {
       EXPECT_NEAR(e2, e3, 1e-9 * std::max(e2, 1e-6));
     }
     EXPECT_GT(plastic, 50);  // the path does exercise the return mapping
-    printf("PLASTIC2D %d\n", plastic);
   }
 }
 
@@ -531,13 +593,13 @@ TEST(MohrCoulomb, RandomIncrementsAlwaysAdmissible) {
     double phi, psi, c, st;
   };
   const Material materials[] = {
-      {30, 0, 0, 0},            // cohesionless sand
-      {40, 40, 0, kInf},        // associated, cut-off at the apex (= 0)
+      {30, 0, 0, 0},                // cohesionless sand
+      {40, 40, 0, kInf},            // associated, cut-off at the apex (= 0)
       {35, 10, 20 * kPa, 5 * kPa},  // cut-off below the apex
-      {25, 5, 10 * kPa, kInf},  // cut-off at the apex c cot(phi)
-      {0, 0, 50 * kPa, kInf},   // Tresca, no cut-off
-      {0, 0, 50 * kPa, 20 * kPa},  // Tresca with cut-off
-      {20, 0, 10 * kPa, 0},     // cohesive, zero tensile strength
+      {25, 5, 10 * kPa, kInf},      // cut-off at the apex c cot(phi)
+      {0, 0, 50 * kPa, kInf},       // Tresca, no cut-off
+      {0, 0, 50 * kPa, 20 * kPa},   // Tresca with cut-off
+      {20, 0, 10 * kPa, 0},         // cohesive, zero tensile strength
   };
   std::mt19937 rng(2023);
   std::normal_distribution<double> n(0, 1);
@@ -573,8 +635,7 @@ TEST(MohrCoulomb, RandomIncrementsAlwaysAdmissible) {
         } else {
           // A plastic state lies on the yield surface or on the cut-off.
           ++plastic;
-          const double on_surface =
-              std::min(std::abs(f), std::abs(principal(s)[0] - cutoff));
+          const double on_surface = std::min(std::abs(f), std::abs(principal(s)[0] - cutoff));
           EXPECT_LE(on_surface, 1e-9 * scale) << "phi " << mat.phi << " step " << step;
         }
         Voigt6 again = s;
@@ -583,6 +644,46 @@ TEST(MohrCoulomb, RandomIncrementsAlwaysAdmissible) {
       }
       EXPECT_GT(plastic, 200) << "phi " << mat.phi;
     }
+  }
+}
+
+// With psi = phi the return is the closest admissible point in the energy norm, which fixes
+// the return region (plane, edge, apex, cut-off) independently of how the code picks it:
+// (t - r)^T D^-1 (y - r) <= 0 for every admissible y (principal values, sorted).
+TEST(MohrCoulomb, AssociatedReturnIsTheClosestPointInEnergyNorm) {
+  struct Material {
+    double phi, c, st;
+  };
+  const Material materials[] = {{30, 0, 0},
+                                {35, 20 * kPa, 5 * kPa},
+                                {25, 10 * kPa, kInf},
+                                {0, 50 * kPa, 20 * kPa},
+                                {0, 50 * kPa, kInf}};
+  std::mt19937 rng(43);
+  std::normal_distribution<double> n(0, 1);
+  for (const Material& mat : materials) {
+    const MohrCoulomb model(10e6, 0.3, mat.phi, mat.phi, mat.c, mat.st);
+    const Reference ref(10e6, 0.3, mat.phi, mat.phi, mat.c);
+    const double cutoff = std::min(mat.st, mat.phi > 0 ? mat.c / std::tan(mat.phi * kDeg) : kInf);
+    const Matrix3d compliance = ref.d().inverse();
+    int plastic = 0;
+    for (int k = 0; k < 300; ++k) {
+      const double size = 100 * kPa;
+      const Voigt6 trial = rotate_stress(random_rotation(rng),
+                                         diagonal(size * n(rng), size * n(rng), size * n(rng)));
+      Voigt6 s = trial;
+      if (model.update(s, Voigt6::Zero()) == 0) continue;
+      ++plastic;
+      const Vector3d t = principal(trial), r = principal(s);
+      const Vector3d w = compliance * (t - r);
+      for (int j = 0; j < 200; ++j) {
+        Vector3d y(size * n(rng), size * n(rng), size * n(rng));
+        std::sort(y.data(), y.data() + 3, std::greater<>());
+        if (ref.f(y, 0, 2) > 0 || y[0] > cutoff) continue;
+        ASSERT_LE(w.dot(y - r), 1e-9 * w.norm() * size) << "phi " << mat.phi;
+      }
+    }
+    EXPECT_GT(plastic, 50);
   }
 }
 
@@ -665,6 +766,19 @@ TEST(PrincipalStresses, AccurateForRepeatedValues) {
     // The fast closed form: exact enough away from repeated values only.
     const Vector3d fast = lituya::solver::principal_values_fast(s);
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(fast[i], sorted[i], 1e-7);
+  }
+  // No over- or underflow for extreme magnitudes (the deviator is scaled internally).
+  for (double magnitude : {1e-200, 1e200}) {
+    const Matrix3d q = random_rotation(rng);
+    const Vector3d lam(3 * magnitude, magnitude, magnitude);
+    const Voigt6 s = stress_voigt(q * lam.asDiagonal() * q.transpose());
+    Vector3d values;
+    Matrix3d vectors;
+    lituya::solver::principal_decomposition(s, values, vectors);
+    EXPECT_NEAR(values[0] / magnitude, 3, 1e-14);
+    EXPECT_NEAR(values[1] / magnitude, 1, 1e-14);
+    EXPECT_NEAR(values[2] / magnitude, 1, 1e-14);
+    EXPECT_NEAR(std::abs(vectors.col(0).dot(q.col(0))), 1, 1e-14);
   }
 }
 

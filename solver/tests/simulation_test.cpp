@@ -97,8 +97,12 @@ void check_free_fall() {
   EXPECT_NEAR(u(0), 0.0, 1e-12);
 }
 
-TEST(Simulation, FreeFallCentreOfMass2D) { check_free_fall<2>(); }
-TEST(Simulation, FreeFallCentreOfMass3D) { check_free_fall<3>(); }
+TEST(Simulation, FreeFallCentreOfMass2D) {
+  check_free_fall<2>();
+}
+TEST(Simulation, FreeFallCentreOfMass3D) {
+  check_free_fall<3>();
+}
 
 // An elastic block on a rigid floor with Coulomb friction, gravity tilted by theta (the same
 // as an incline): a = g (sin(theta) - mu cos(theta)) while it slides. The block first settles
@@ -140,7 +144,8 @@ double sliding_block_velocity(double theta_deg, double mu, double time) {
 
 TEST(Simulation, SlidingBlockMatchesCoulombAcceleration) {
   const double theta = 30, mu = 0.2, t = 0.2;
-  const double expected = 9.81 * (std::sin(theta * kPi / 180) - mu * std::cos(theta * kPi / 180)) * t;
+  const double expected =
+      9.81 * (std::sin(theta * kPi / 180) - mu * std::cos(theta * kPi / 180)) * t;
   // 1 %: the nodal Coulomb law is exact for a rigid block; the elastic block's small
   // vibrations at release perturb the normal force slightly.
   EXPECT_NEAR(sliding_block_velocity(theta, mu, t), expected, 0.01 * expected);

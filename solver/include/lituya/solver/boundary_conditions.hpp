@@ -21,7 +21,7 @@ struct NodalConstraint {
   double friction = 0;
   std::vector<int> directions;  // fixity
   std::vector<int> nodes;
-  std::vector<Vec> normal;      // per node: unit outward normal of the group's facets
+  std::vector<Vec> normal;  // per node: unit outward normal of the group's facets
 };
 
 // Builds the node set and outward normals of one boundary condition from its group's facets.

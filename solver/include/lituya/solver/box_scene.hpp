@@ -17,7 +17,7 @@ struct BoxScene {
   std::array<int, dim> cells{};
   Vec block_min = Vec::Zero();  // cells whose centroid lies in [block_min, block_max] get points
   Vec block_max = Vec::Ones();
-  int points_per_cell = 4;     // 1 or 4 (2D: sub-triangle centroids; 3D: Gauss points)
+  int points_per_cell = 4;  // 1 or 4 (2D: sub-triangle centroids; 3D: Gauss points)
   Material material;
   std::vector<double> gravity;  // dim components
   // Boundary conditions on box sides: side is "x-", "x+", "y-", "y+", "z-" or "z+"; the

@@ -14,16 +14,16 @@ template <int dim>
 struct MaterialPoints {
   using Vec = Eigen::Matrix<double, dim, 1>;
 
-  std::vector<Vec> position;        // m
-  std::vector<Vec> velocity;        // m/s
-  std::vector<Vec> displacement;    // m, since the last reset
-  std::vector<double> mass;         // kg (per metre of thickness in 2D)
-  std::vector<double> volume;       // m3 (m2 in 2D)
-  std::vector<Voigt6> stress;       // effective stress, Pa, tension positive
+  std::vector<Vec> position;           // m
+  std::vector<Vec> velocity;           // m/s
+  std::vector<Vec> displacement;       // m, since the last reset
+  std::vector<double> mass;            // kg (per metre of thickness in 2D)
+  std::vector<double> volume;          // m3 (m2 in 2D)
+  std::vector<Voigt6> stress;          // effective stress, Pa, tension positive
   std::vector<double> plastic_strain;  // equivalent plastic strain
-  std::vector<int> material;        // index into the case's materials
-  std::vector<int> cell;            // containing background cell
-  std::vector<int> id;              // index in points.vtu (points may be reordered)
+  std::vector<int> material;           // index into the case's materials
+  std::vector<int> cell;               // containing background cell
+  std::vector<int> id;                 // index in points.vtu (points may be reordered)
 
   std::size_t size() const { return position.size(); }
   void resize(std::size_t n) {

@@ -18,7 +18,8 @@ struct ElasticConstants {
 };
 
 // sigma += D^e : d_eps (eq. 19 without plastic part).
-void elastic_update(const ElasticConstants& elastic, Voigt6& stress, const Voigt6& strain_increment);
+void elastic_update(const ElasticConstants& elastic, Voigt6& stress,
+                    const Voigt6& strain_increment);
 
 class MohrCoulomb {
  public:
@@ -50,7 +51,7 @@ class MohrCoulomb {
   enum class Cutoff { none, at_apex, below_apex };
   Cutoff cutoff_ = Cutoff::none;
   double two_c_cos_phi_ = 0;  // 2 c cos(phi)
-  double s3_corner_ = 0;      // s3 on the yield plane where s1 = s2 = tensile_strength_
+  double s3_corner_ = 0;      // s3 on the yield plane where s1 = tensile_strength_
   double lambda_ratio_ = 0;   // lambda / (3 lambda + 2 G), for D^-1
   double db1_[3] = {}, db2_[3] = {}, db3_[3] = {};  // D b for the three flow vectors
   double m_ = 0, n12_ = 0, n13_ = 0;                // a_i . D b_j, see return_principal

@@ -29,11 +29,11 @@ namespace lituya::solver {
 struct StageReport {
   std::string stage;
   long steps = 0;
-  double simulated_time = 0;        // s
-  double wall_time = 0;             // s
+  double simulated_time = 0;  // s
+  double wall_time = 0;       // s
   double point_steps_per_second = 0;
-  std::size_t peak_memory = 0;      // bytes (process peak resident set)
-  std::string stop_reason;          // "duration reached", "kinetic energy ratio below ..."
+  std::size_t peak_memory = 0;  // bytes (process peak resident set)
+  std::string stop_reason;      // "duration reached", "kinetic energy ratio below ..."
 };
 
 // Called at each output time of a stage: (stage, stage time, output index).

@@ -14,7 +14,7 @@ struct SolveOptions {
   std::filesystem::path output_folder;  // default: <case>/output
   int threads = 1;
   bool overwrite = false;
-  std::ostream* progress = nullptr;     // progress line and stage summaries
+  std::ostream* progress = nullptr;  // progress line and stage summaries
 };
 
 std::vector<StageReport> solve_case(const std::filesystem::path& case_folder,

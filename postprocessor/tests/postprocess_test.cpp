@@ -1,0 +1,322 @@
+// The whole `lituya post` pipeline on a synthetic case, the validation of post.toml and of the
+// files it points at, and the gnuplot driver.
+#include <cstdlib>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "lituya/common/input_error.hpp"
+#include "lituya/post/plot.hpp"
+#include "synthetic_output.hpp"
+
+namespace lituya::post {
+namespace {
+
+namespace fs = std::filesystem;
+using synthetic::add_block;
+using synthetic::read_csv_rows;
+using synthetic::read_text;
+using synthetic::write_text;
+
+// Line numbers matter: the error tests below refer to them.
+const char* kPostToml =
+    "format = \"lituya-post\"\n"         // 1
+    "version = 1\n"                      // 2
+    "slope_origin = [0.3, 0.5]\n"        // 3
+    "slope_angle = 22.0\n"               // 4
+    "track_materials = [\"column\"]\n"   // 5
+    "wall_position = 0.0\n"              // 6
+    "bin_width = 0.01\n"                 // 7
+    "min_points = 2\n"                   // 8
+    "profile_times = [0.0, 0.4, 1.0]\n"  // 9
+    "stage = \"release\"\n";             // 10
+
+const char* kMaterialsToml =
+    "format = \"lituya-materials\"\nversion = 1\n"
+    "[[material]]\nname = \"column\"\nmodel = \"mohr-coulomb\"\n"
+    "[[material]]\nname = \"bed\"\nmodel = \"mohr-coulomb\"\n";
+
+// Replaces line `line` (1-based) of `text`.
+std::string with_line(const std::string& text, int line, const std::string& replacement) {
+  std::string out;
+  size_t start = 0;
+  for (int l = 1; start < text.size(); ++l) {
+    size_t end = text.find('\n', start);
+    out += (l == line ? replacement : text.substr(start, end - start)) + "\n";
+    start = end + 1;
+  }
+  return out;
+}
+
+// A 2D case whose column spreads down the 22 degree slope over three outputs: length 0.2,
+// 0.3, 0.5 m and height 0.14, 0.10, 0.06 m, on an untracked bed layer along the whole slope.
+class PostCase : public synthetic::TempFolderTest {
+ protected:
+  static constexpr double kTimes[3] = {0.0, 0.5, 1.0};
+  static constexpr double kLength[3] = {0.2, 0.3, 0.5};
+  static constexpr double kHeight[3] = {0.14, 0.10, 0.06};
+
+  void SetUp() override {
+    TempFolderTest::SetUp();
+    case_ = folder_ / "case";
+    write_text(case_ / "post.toml", kPostToml);
+    write_text(case_ / "materials.toml", kMaterialsToml);
+    write_text(case_ / "stages.toml", "format = \"lituya-stages\"\nversion = 1\ndimension = 2\n");
+    SlopeFrame frame(Eigen::Vector3d(0.3, 0.5, 0.0), 22.0);
+    fs::create_directories(case_ / "output");
+    PvdWriter pvd(case_ / "output" / "release_points.pvd");
+    for (int k = 0; k < 3; ++k) {
+      PointCloud cloud;
+      add_block(cloud, frame, 0.0, kLength[k], 0.0, kHeight[k], 0.005, 0);
+      add_block(cloud, frame, -0.1, 1.0, -0.01, 0.0, 0.005, 1);
+      char name[64];
+      std::snprintf(name, sizeof name, "release_points_%04d.vtu", k);
+      synthetic::write_cloud(cloud, case_ / "output" / name);
+      pvd.add(kTimes[k], name);
+    }
+  }
+
+  void expect_input_error(const std::string& post_toml, int line, const std::string& mention) {
+    write_text(case_ / "post.toml", post_toml);
+    try {
+      postprocess(case_, case_ / "post", false);
+      ADD_FAILURE() << "no InputError; expected one at line " << line;
+    } catch (const InputError& e) {
+      EXPECT_EQ(fs::path(e.file()).filename(), "post.toml") << e.what();
+      EXPECT_EQ(e.line(), line) << e.what();
+      EXPECT_NE(std::string(e.what()).find(mention), std::string::npos) << e.what();
+    }
+    // Nothing is written when the input is wrong.
+    EXPECT_FALSE(fs::exists(case_ / "post"));
+  }
+
+  fs::path case_;
+};
+
+TEST_F(PostCase, RunoutWallHeightAndProfilesOfASpreadingColumn) {
+  PostResult result = postprocess(case_, case_ / "post", false);
+
+  auto runout = read_csv_rows(case_ / "post" / "runout.csv");
+  ASSERT_EQ(runout.size(), 3u);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_DOUBLE_EQ(runout[k][0], kTimes[k]);
+    EXPECT_NEAR(runout[k][1], kLength[k], 1e-9) << "front at t = " << kTimes[k];
+    EXPECT_NEAR(runout[k][2], kLength[k] - 0.2, 1e-9) << "travel at t = " << kTimes[k];
+    EXPECT_NEAR(result.front_travel[k], kLength[k] - 0.2, 1e-9);
+  }
+  EXPECT_EQ(read_text(case_ / "post" / "runout.csv").substr(0, 35),
+            "time,front_position,front_travel\n0,");
+
+  auto wall = read_csv_rows(case_ / "post" / "wall_height.csv");
+  ASSERT_EQ(wall.size(), 3u);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(wall[k][1], kHeight[k], 1e-9);
+
+  // profile_times 0, 0.4, 1.0 -> outputs at 0, 0.5, 1.0, recorded with their own times.
+  ASSERT_EQ(result.profiles.size(), 3u);
+  EXPECT_DOUBLE_EQ(result.profiles[1].requested_time, 0.4);
+  EXPECT_DOUBLE_EQ(result.profiles[1].time, 0.5);
+  auto profiles = read_csv_rows(case_ / "post" / "profiles.csv");
+  int rows_at_half = 0;
+  for (const auto& row : profiles) {
+    ASSERT_EQ(row.size(), 3u);
+    if (row[0] != 0.5) continue;
+    ++rows_at_half;
+    const bool in_mass = row[1] > 0 && row[1] < 0.3;
+    EXPECT_NEAR(row[2], in_mass ? 0.10 : 0.0, 1e-9) << "s = " << row[1];
+  }
+  EXPECT_EQ(rows_at_half, 32);  // 0.3 m of column in 0.01 m bins, an empty bin each side
+  EXPECT_EQ(profiles.size(), 22u + 32u + 52u);
+
+  EXPECT_TRUE(fs::exists(case_ / "post" / "runout.gp"));
+  EXPECT_TRUE(fs::exists(case_ / "post" / "wall_height.gp"));
+  EXPECT_TRUE(fs::exists(case_ / "post" / "profiles.gp"));
+  if (gnuplot_available()) {
+    EXPECT_TRUE(result.plots_written);
+    for (const char* png : {"runout.png", "wall_height.png", "profiles.png"})
+      EXPECT_GT(fs::file_size(case_ / "post" / png), 1000u) << png;
+  }
+}
+
+TEST_F(PostCase, InitialFrontAndReferenceData) {
+  write_text(case_ / "reference.csv",
+             "time,front_travel,wall_height\n0,0,0.14\n0.32,0.3,0.125\n0.64,,0.08\n");
+  write_text(case_ / "post.toml",
+             std::string(kPostToml) + "initial_front = 0.1\nreference = \"reference.csv\"\n");
+  PostResult result = postprocess(case_, case_ / "post", false);
+  ASSERT_EQ(result.front_travel.size(), 3u);
+  EXPECT_NEAR(result.front_travel[0], 0.1, 1e-9);
+  EXPECT_NEAR(result.front_travel[2], 0.4, 1e-9);
+
+  EXPECT_EQ(read_text(case_ / "post" / "reference.csv"), read_text(case_ / "reference.csv"));
+  auto reference_runout = read_csv_rows(case_ / "post" / "reference_runout.csv");
+  ASSERT_EQ(reference_runout.size(), 2u);  // the blank front at 0.64 s is no value
+  EXPECT_DOUBLE_EQ(reference_runout[1][1], 0.3);
+  auto reference_wall = read_csv_rows(case_ / "post" / "reference_wall_height.csv");
+  ASSERT_EQ(reference_wall.size(), 3u);
+  EXPECT_DOUBLE_EQ(reference_wall[2][0], 0.64);
+  EXPECT_DOUBLE_EQ(reference_wall[2][1], 0.08);
+  EXPECT_NE(read_text(case_ / "post" / "runout.gp").find("reference_runout.csv"),
+            std::string::npos);
+}
+
+TEST_F(PostCase, AnEarlierPostIsOverwrittenOnlyWhenForced) {
+  postprocess(case_, case_ / "post", false);
+  EXPECT_THROW(postprocess(case_, case_ / "post", false), InputError);
+  EXPECT_NO_THROW(postprocess(case_, case_ / "post", true));
+}
+
+TEST_F(PostCase, UnknownKeyIsAnErrorAtItsLine) {
+  expect_input_error(std::string(kPostToml) + "frnt_bin = 3\n", 11, "frnt_bin");
+}
+
+TEST_F(PostCase, WrongTypeIsAnErrorAtItsLine) {
+  expect_input_error(with_line(kPostToml, 4, "slope_angle = \"22\""), 4, "slope_angle");
+}
+
+TEST_F(PostCase, OutOfRangeValuesAreErrorsAtTheirLines) {
+  expect_input_error(with_line(kPostToml, 8, "min_points = 0"), 8, "min_points");
+  expect_input_error(with_line(kPostToml, 7, "bin_width = -0.01"), 7, "bin_width");
+  expect_input_error(with_line(kPostToml, 3, "slope_origin = [0.3]"), 3, "slope_origin");
+}
+
+TEST_F(PostCase, UnknownMaterialIsAnErrorAtTrackMaterials) {
+  expect_input_error(with_line(kPostToml, 5, "track_materials = [\"colum\"]"), 5, "\"colum\"");
+}
+
+TEST_F(PostCase, MissingOutputSeriesIsAnErrorAtTheStage) {
+  expect_input_error(with_line(kPostToml, 10, "stage = \"runout\""), 10, "runout_points.pvd");
+}
+
+TEST_F(PostCase, MissingReferenceFileIsAnErrorAtItsLine) {
+  expect_input_error(std::string(kPostToml) + "reference = \"nowhere.csv\"\n", 11, "nowhere.csv");
+}
+
+TEST_F(PostCase, PointFileListedButMissingIsAnError) {
+  fs::remove(case_ / "output" / "release_points_0001.vtu");
+  try {
+    postprocess(case_, case_ / "post", false);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(fs::path(e.file()).filename(), "release_points_0001.vtu") << e.what();
+  }
+}
+
+using SeriesFiles = synthetic::TempFolderTest;
+
+TEST_F(SeriesFiles, PvdPathsAreRelativeToItsFolderAndSortedByTime) {
+  write_text(folder_ / "out" / "s.pvd",
+             "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+             "  <Collection>\n"
+             "    <DataSet timestep=\"0.25\" part=\"0\" file=\"b &amp; c.vtu\"/>\n"
+             "    <DataSet part=\"0\" timestep=\"0\" file=\"a.vtu\"/>\n"
+             "  </Collection>\n</VTKFile>\n");
+  auto entries = read_pvd(folder_ / "out" / "s.pvd");
+  ASSERT_EQ(entries.size(), 2u);
+  EXPECT_DOUBLE_EQ(entries[0].time, 0.0);
+  EXPECT_EQ(entries[0].file, folder_ / "out" / "a.vtu");
+  EXPECT_DOUBLE_EQ(entries[1].time, 0.25);
+  EXPECT_EQ(entries[1].file, folder_ / "out" / "b & c.vtu");
+}
+
+TEST_F(SeriesFiles, MissingOrGarbledPvdIsAnInputError) {
+  EXPECT_THROW(read_pvd(folder_ / "none.pvd"), InputError);
+  write_text(folder_ / "cut.pvd",
+             "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+             "  <Collection>\n    <DataSet timestep=\"0\" file=\"a.vtu\"/>\n");
+  EXPECT_THROW(read_pvd(folder_ / "cut.pvd"), InputError);
+  write_text(folder_ / "bad.pvd",
+             "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+             "  <Collection>\n    <DataSet timestep=\"soon\" file=\"a.vtu\"/>\n"
+             "  </Collection>\n</VTKFile>\n");
+  try {
+    read_pvd(folder_ / "bad.pvd");
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 4) << e.what();
+  }
+}
+
+TEST_F(SeriesFiles, PointsRoundTripThroughTheSolversWriter) {
+  SlopeFrame frame(Eigen::Vector3d::Zero(), 22.0);
+  PointCloud written;
+  add_block(written, frame, 0.0, 0.02, 0.0, 0.01, 0.005, 3);
+  synthetic::write_cloud(written, folder_ / "p.vtu");
+  PointCloud read = read_points(folder_ / "p.vtu");
+  ASSERT_EQ(read.position.size(), 8u);
+  EXPECT_EQ(read.dimension, 2);
+  EXPECT_TRUE(read.position[5].isApprox(written.position[5], 1e-15));
+  EXPECT_EQ(read.material[5], 3);
+  EXPECT_DOUBLE_EQ(read.volume[5], 0.005 * 0.005);
+  EXPECT_EQ(read.id[5], 5);
+}
+
+TEST_F(SeriesFiles, GarbledPointFileIsAnInputError) {
+  write_text(folder_ / "bad.vtu", "<?xml version=\"1.0\"?>\n<VTKFile type=\"Unstruct");
+  EXPECT_THROW(read_points(folder_ / "bad.vtu"), InputError);
+  EXPECT_THROW(read_points(folder_ / "missing.vtu"), InputError);
+  // A file cut short while being copied: the header is fine, the data is not.
+  PointCloud cloud;
+  add_block(cloud, SlopeFrame(Eigen::Vector3d::Zero(), 22.0), 0.0, 0.1, 0.0, 0.1, 0.005, 0);
+  synthetic::write_cloud(cloud, folder_ / "cut.vtu");
+  fs::resize_file(folder_ / "cut.vtu", fs::file_size(folder_ / "cut.vtu") / 2);
+  EXPECT_THROW(read_points(folder_ / "cut.vtu"), InputError);
+}
+
+TEST_F(SeriesFiles, ReferenceColumnsByHeaderNameWithBlanks) {
+  write_text(folder_ / "ref.csv",
+             "# Mangeney et al. 2010, read off fig. 5\n"
+             "wall_height, time ,front_travel\n0.14,0,0\n,0.32,0.3\n");
+  ReferenceData data = read_reference(folder_ / "ref.csv");
+  ASSERT_EQ(data.time.size(), 2u);
+  EXPECT_DOUBLE_EQ(data.time[1], 0.32);
+  EXPECT_DOUBLE_EQ(*data.front_travel[1], 0.3);
+  EXPECT_FALSE(data.wall_height[1].has_value());
+  EXPECT_DOUBLE_EQ(*data.wall_height[0], 0.14);
+  write_text(folder_ / "bad.csv", "time,front_travel\n0,0\n0.3,far\n");
+  try {
+    read_reference(folder_ / "bad.csv");
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3) << e.what();
+  }
+}
+
+using Plot = synthetic::TempFolderTest;
+
+TEST_F(Plot, CsvColumnsByName) {
+  write_text(folder_ / "a.csv", "time,front_position,front_travel\n0,1,2\n");
+  EXPECT_EQ(csv_column(folder_ / "a.csv", "front_travel"), 3);
+  EXPECT_THROW(csv_column(folder_ / "a.csv", "height"), InputError);
+}
+
+TEST_F(Plot, WritesScriptAndPng) {
+  write_text(folder_ / "data.csv", "time,value\n0,0\n0.5,0.25\n1,1\n");
+  write_text(folder_ / "ref.csv", "time,value\n0.5,0.3\n");
+  const bool made = plot_xy(folder_ / "plot.png", "A title", "time (s)", "value (m)",
+                            {{folder_ / "data.csv", 1, 2, "simulation"},
+                             {folder_ / "ref.csv", 1, 2, "it's measured", true}});
+  const std::string script = read_text(folder_ / "plot.gp");
+  EXPECT_NE(script.find("set terminal pngcairo size 900,600"), std::string::npos);
+  EXPECT_NE(script.find("'data.csv'"), std::string::npos);  // relative to the script
+  EXPECT_NE(script.find("'it''s measured'"), std::string::npos);
+  if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not on PATH";
+  ASSERT_TRUE(made);
+  const std::string png = read_text(folder_ / "plot.png");
+  ASSERT_GT(png.size(), 1000u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+}
+
+TEST_F(Plot, WithoutGnuplotTheScriptIsStillWritten) {
+  const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+  ::setenv("PATH", (folder_ / "no-such-bin").c_str(), 1);
+  write_text(folder_ / "data.csv", "time,value\n0,0\n1,1\n");
+  const bool made =
+      plot_xy(folder_ / "plot.png", "t", "x", "y", {{folder_ / "data.csv", 1, 2, "data"}});
+  ::setenv("PATH", path.c_str(), 1);
+  EXPECT_FALSE(made);
+  EXPECT_TRUE(fs::exists(folder_ / "plot.gp"));
+  EXPECT_FALSE(fs::exists(folder_ / "plot.png"));
+}
+
+}  // namespace
+}  // namespace lituya::post

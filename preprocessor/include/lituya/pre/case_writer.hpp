@@ -1,0 +1,36 @@
+#pragma once
+// The files of a case folder (see manuals/file-formats.md).
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "lituya/pre/material_points.hpp"
+#include "lituya/pre/mesh.hpp"
+#include "lituya/pre/scene.hpp"
+
+namespace lituya::pre {
+
+// File names inside the case folder.
+inline constexpr const char* kGeometryFile = "geometry.vtu";
+inline constexpr const char* kPointsFile = "points.vtu";
+inline constexpr const char* kMaterialsFile = "materials.toml";
+inline constexpr const char* kStagesFile = "stages.toml";
+inline constexpr const char* kPostFile = "post.toml";
+
+// Cell data `group` of each background cell: the id of the region group that holds it, -1
+// for cells outside every region.
+std::vector<std::int32_t> region_group_of_cells(const Scene& scene, const Mesh& mesh);
+
+// geometry.vtu: nodes, background cells, then the facets of every group of dimension - 1.
+void write_geometry(const Mesh& mesh, const std::vector<std::int32_t>& cell_group,
+                    const std::filesystem::path& file);
+// points.vtu: one vertex cell per material point.
+void write_points(const MaterialPoints& points, const std::filesystem::path& file);
+// materials.toml
+void write_materials(const Scene& scene, const std::filesystem::path& file);
+// stages.toml
+void write_stages(const Scene& scene, const Mesh& mesh, const std::filesystem::path& file);
+// post.toml, and the reference data next to it.
+void write_post(const PostSettings& post, const std::filesystem::path& case_folder);
+
+}  // namespace lituya::pre

@@ -1,0 +1,21 @@
+#pragma once
+// `lituya pre`: scene.toml + a gmsh geometry -> a case folder the solver reads.
+#include <cstddef>
+#include <filesystem>
+
+namespace lituya::pre {
+
+struct PreprocessSummary {
+  int dimension = 0;
+  std::size_t nodes = 0, cells = 0, points = 0;
+};
+
+// Reads the scene, meshes its geometry with gmsh, seeds points, writes the case folder
+// (geometry.vtu, points.vtu, materials.toml, stages.toml, post.toml if the scene has [post]).
+// Throws lituya::InputError (file + line + what was expected) for any bad input; never writes
+// into a non-empty case folder unless overwrite is true (use prepare_output_folder), and
+// validates everything BEFORE creating the folder.
+PreprocessSummary preprocess(const std::filesystem::path& scene_file,
+                             const std::filesystem::path& case_folder, bool overwrite);
+
+}  // namespace lituya::pre

@@ -1,0 +1,64 @@
+#pragma once
+// scene.toml, the one file a user writes: what to mesh, which physical groups hold which
+// material, boundaries, stages, solver and output settings, and what to post-process.
+// Everything that can be checked without the mesh is checked by read_scene; the references to
+// physical groups are checked against the mesh by check_scene_groups.
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "lituya/pre/mesh.hpp"
+#include "lituya/solver/case_description.hpp"
+
+namespace lituya::pre {
+
+enum class InitialStress { kZero, kK0 };
+
+// A physical group of dimension `dimension` filled with material points.
+struct Region {
+  std::string group;
+  std::size_t material = 0;  // index in Scene::materials
+  InitialStress initial_stress = InitialStress::kZero;
+  double k0 = 0;       // lateral earth pressure coefficient at rest (k0 regions only)
+  int group_line = 0;  // scene.toml line of `group`, for messages
+};
+
+// The [post] table, forwarded to post.toml (`lituya post` validates its keys itself).
+struct PostSettings {
+  toml::table table;  // without the header keys
+  // The reference data file named by `reference`, resolved against the scene folder; it is
+  // copied next to post.toml and `reference` rewritten to its file name.
+  std::optional<std::filesystem::path> reference_file;
+};
+
+struct Scene {
+  std::string file;  // scene.toml as given, for messages
+  std::string title;
+  std::filesystem::path geometry;  // resolved against the scene's folder
+  int dimension = 2;
+  double cell_size = 0;
+  int points_per_cell = 0;
+  std::vector<double> gravity;  // `dimension` components
+  std::vector<solver::Material> materials;
+  std::vector<Region> regions;
+  std::vector<solver::BoundaryCondition> boundaries;
+  std::vector<int> boundary_group_lines;  // scene.toml line of each boundary's `group`
+  std::vector<solver::Stage> stages;
+  solver::SolverSettings solver;
+  solver::OutputSettings output;
+  std::optional<PostSettings> post;
+};
+
+// Reads and validates scene.toml; throws InputError naming scene.toml and the line.
+Scene read_scene(const std::filesystem::path& scene_file);
+
+// Checks that every region names a physical group of dimension `dimension`, every boundary
+// one of dimension `dimension - 1`, and that no cell belongs to two regions. Throws
+// InputError at the scene line, listing the groups the geometry has.
+void check_scene_groups(const Scene& scene, const Mesh& mesh);
+
+}  // namespace lituya::pre

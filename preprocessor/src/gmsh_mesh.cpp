@@ -1,0 +1,318 @@
+#include "lituya/pre/gmsh_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <unordered_map>
+#include <utility>
+
+#include <gmsh.h>
+
+#include "lituya/common/input_error.hpp"
+
+namespace lituya::pre {
+
+namespace {
+
+// gmsh is a global singleton: every read opens one session and always closes it, also when
+// an error leaves this function, so the next read (or a test) starts from a clean state.
+class GmshSession {
+ public:
+  explicit GmshSession(bool verbose) {
+    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+    gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
+    // Make every gmsh error an exception (the API default, stated so it does not depend on
+    // the version), which read_gmsh_mesh turns into an InputError.
+    gmsh::option::setNumber("General.AbortOnError", 2);
+  }
+  ~GmshSession() {
+    try {
+      gmsh::finalize();
+    } catch (...) {
+      // Nothing sensible to do while unwinding; the process keeps going without gmsh.
+    }
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+};
+
+// gmsh's messages look like "'path/case.geo', line 12: syntax error (;)". The line becomes
+// the InputError's line when the message is about the file the user gave (not an included
+// one), so the error reads like every other Lituya error: file:line: what.
+InputError gmsh_error(const std::filesystem::path& geometry, const std::string& message) {
+  static const std::regex located(R"(^'([^']*)', line (\d+)\s*:\s*(.*)$)");
+  std::smatch m;
+  if (std::regex_search(message, m, located) &&
+      std::filesystem::path(m[1].str()).filename() == geometry.filename())
+    return InputError(geometry.string(), std::stoi(m[2].str()), "gmsh: " + m[3].str());
+  return InputError(geometry.string(), 0, "gmsh: " + message);
+}
+
+// Opens a file and reports its first error. gmsh's .geo parser must not be interrupted by an
+// exception: a throw from inside it leaves its lexer reading the closed file, and every later
+// parse in this process fails. So errors are logged (not thrown) while the file is read, and
+// the log is checked afterwards.
+void open_without_throwing(const std::filesystem::path& geometry) {
+  gmsh::logger::start();
+  gmsh::option::setNumber("General.AbortOnError", 0);
+  gmsh::open(geometry.string());
+  gmsh::option::setNumber("General.AbortOnError", 2);
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  gmsh::logger::stop();
+  for (const std::string& line : log)
+    if (line.rfind("Error: ", 0) == 0) throw gmsh_error(geometry, line.substr(7));
+}
+
+std::string element_name(int type) {
+  std::string name;
+  int dim = 0, order = 0, nodes = 0, primary = 0;
+  std::vector<double> local;
+  gmsh::model::mesh::getElementProperties(type, name, dim, order, nodes, local, primary);
+  return name + " (gmsh type " + std::to_string(type) + ")";
+}
+
+// "surface 3", "volume 1": how gmsh's GUI and .geo files name geometric entities.
+std::string entity_words(int dim, int tag) {
+  static const char* kinds[] = {"point", "curve", "surface", "volume"};
+  return std::string(kinds[std::clamp(dim, 0, 3)]) + " " + std::to_string(tag);
+}
+
+struct GmshElements {
+  std::vector<std::size_t> tags;
+  std::vector<std::size_t> node_tags;
+};
+
+// The elements of one geometric entity, all of `expected_type`.
+GmshElements entity_elements(const std::filesystem::path& geometry, int dim, int entity,
+                             int expected_type, const std::string& what_is_expected) {
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, node_tags;
+  gmsh::model::mesh::getElements(types, tags, node_tags, dim, entity);
+  GmshElements out;
+  for (std::size_t t = 0; t < types.size(); ++t) {
+    if (tags[t].empty()) continue;
+    if (types[t] != expected_type)
+      throw InputError(geometry.string(), 0,
+                       entity_words(dim, entity) + " has " + std::to_string(tags[t].size()) +
+                           " elements of type " + element_name(types[t]) + "; Lituya needs " +
+                           what_is_expected);
+    out.tags.insert(out.tags.end(), tags[t].begin(), tags[t].end());
+    out.node_tags.insert(out.node_tags.end(), node_tags[t].begin(), node_tags[t].end());
+  }
+  return out;
+}
+
+std::string node_list(const std::vector<std::size_t>& gmsh_tags) {
+  std::string s;
+  for (std::size_t t : gmsh_tags) {
+    if (!s.empty()) s += ' ';
+    s += std::to_string(t);
+  }
+  return s;
+}
+
+// Checks the cells of one geometric entity [begin, end) and orients them positively. A 2D
+// surface whose normal points to -z comes out of gmsh entirely clockwise: that is only a
+// convention, so its triangles are reordered. A mix of orientations within one entity, a
+// negative tetrahedron, or a cell of (almost) no size is a broken mesh.
+void orient_cells(Mesh& mesh, std::size_t begin, std::size_t end, double cell_size,
+                  const std::vector<std::size_t>& gmsh_node_tag,
+                  const std::filesystem::path& geometry, int entity) {
+  const double tiny = 1e-10 * std::pow(cell_size, mesh.dimension);
+  const int corners = mesh.nodes_per_cell();
+  std::size_t negative = 0, first_negative = end, first_positive = end;
+  auto fail = [&](std::size_t cell, double measure, const std::string& why) {
+    std::vector<std::size_t> nodes;
+    for (int c = 0; c < corners; ++c)
+      nodes.push_back(gmsh_node_tag[static_cast<std::size_t>(mesh.cell_nodes[cell * corners + c])]);
+    std::ostringstream m;
+    m << "inverted or degenerate element " << mesh.cell_element_tags[cell] << " (nodes "
+      << node_list(nodes) << ") in " << entity_words(mesh.dimension, entity) << ": signed "
+      << (mesh.dimension == 2 ? "area " : "volume ") << measure << ", " << why;
+    throw InputError(geometry.string(), 0, m.str());
+  };
+  for (std::size_t cell = begin; cell < end; ++cell) {
+    const double measure = signed_cell_measure(mesh, cell);
+    if (std::abs(measure) <= tiny)
+      fail(cell, measure, "which is (almost) zero: the cell has collapsed");
+    if (measure < 0) {
+      ++negative;
+      if (first_negative == end) first_negative = cell;
+    } else if (first_positive == end) {
+      first_positive = cell;
+    }
+  }
+  if (negative == 0) return;
+  if (mesh.dimension == 3)
+    fail(first_negative, signed_cell_measure(mesh, first_negative),
+         "tetrahedra must have positive volume (node order right-handed)");
+  if (negative != end - begin) {
+    // Name a cell of the minority orientation: that is the one most likely inverted.
+    const bool negatives_are_fewer = 2 * negative <= end - begin;
+    const std::size_t cell = negatives_are_fewer ? first_negative : first_positive;
+    fail(cell, signed_cell_measure(mesh, cell),
+         "while " + std::to_string(negatives_are_fewer ? end - begin - negative : negative) +
+             " of the " + std::to_string(end - begin) +
+             " triangles of this surface have the opposite orientation");
+  }
+  for (std::size_t cell = begin; cell < end; ++cell)
+    std::swap(mesh.cell_nodes[cell * corners + 1], mesh.cell_nodes[cell * corners + 2]);
+}
+
+Mesh read_current_model(const std::filesystem::path& geometry, const MeshingOptions& options) {
+  const int dim = options.dimension;
+  const int cell_type = dim == 2 ? 2 : 4;   // 3-node triangle, 4-node tetrahedron
+  const int facet_type = dim == 2 ? 1 : 2;  // 2-node line, 3-node triangle
+  const std::string cell_words =
+      dim == 2 ? "linear triangles (gmsh type 2) in 2D" : "linear tetrahedra (gmsh type 4) in 3D";
+  const std::string facet_words = dim == 2 ? "linear lines (gmsh type 1) on 2D boundaries"
+                                           : "linear triangles (gmsh type 2) on 3D boundaries";
+  Mesh mesh;
+  mesh.dimension = dim;
+
+  // Cells, entity by entity (orientation is a per-entity matter), still with gmsh node tags.
+  std::vector<std::pair<int, std::pair<std::size_t, std::size_t>>> entity_cells;
+  std::vector<std::size_t> cell_gmsh_nodes;
+  gmsh::vectorpair entities;
+  gmsh::model::getEntities(entities, dim);
+  for (const auto& [entity_dim, entity] : entities) {
+    GmshElements e = entity_elements(geometry, entity_dim, entity, cell_type, cell_words);
+    const std::size_t begin = mesh.cell_element_tags.size();
+    mesh.cell_element_tags.insert(mesh.cell_element_tags.end(), e.tags.begin(), e.tags.end());
+    cell_gmsh_nodes.insert(cell_gmsh_nodes.end(), e.node_tags.begin(), e.node_tags.end());
+    entity_cells.push_back({entity, {begin, mesh.cell_element_tags.size()}});
+  }
+  if (mesh.cell_element_tags.empty())
+    throw InputError(geometry.string(), 0,
+                     "the model has no elements of dimension " + std::to_string(dim) +
+                         " (does it define " + (dim == 2 ? "surfaces" : "volumes") +
+                         ", and is [mesh] dimension right?)");
+
+  // Compact 0-based node numbering, in gmsh tag order, of the nodes the cells use.
+  std::vector<std::size_t> gmsh_node_tag = cell_gmsh_nodes;
+  std::sort(gmsh_node_tag.begin(), gmsh_node_tag.end());
+  gmsh_node_tag.erase(std::unique(gmsh_node_tag.begin(), gmsh_node_tag.end()), gmsh_node_tag.end());
+  std::unordered_map<std::size_t, std::int64_t> node_index;
+  for (std::size_t i = 0; i < gmsh_node_tag.size(); ++i)
+    node_index[gmsh_node_tag[i]] = static_cast<std::int64_t>(i);
+  mesh.cell_nodes.reserve(cell_gmsh_nodes.size());
+  for (std::size_t tag : cell_gmsh_nodes) mesh.cell_nodes.push_back(node_index.at(tag));
+
+  std::vector<std::size_t> all_tags;
+  std::vector<double> all_xyz, parametric;
+  gmsh::model::mesh::getNodes(all_tags, all_xyz, parametric, -1, -1, false, false);
+  mesh.node_xyz.assign(3 * gmsh_node_tag.size(), 0.0);
+  std::vector<bool> found(gmsh_node_tag.size(), false);
+  for (std::size_t i = 0; i < all_tags.size(); ++i) {
+    auto it = node_index.find(all_tags[i]);
+    if (it == node_index.end()) continue;
+    const auto n = static_cast<std::size_t>(it->second);
+    std::copy_n(&all_xyz[3 * i], 3, &mesh.node_xyz[3 * n]);
+    found[n] = true;
+  }
+  for (std::size_t n = 0; n < found.size(); ++n)
+    if (!found[n])
+      throw InputError(geometry.string(), 0,
+                       "an element uses node " + std::to_string(gmsh_node_tag[n]) +
+                           ", which the file does not define");
+  if (dim == 2) {
+    // Plane strain lives in the x-y plane.
+    for (std::size_t n = 0; n < gmsh_node_tag.size(); ++n)
+      if (std::abs(mesh.node_xyz[3 * n + 2]) > 1e-9 * options.cell_size)
+        throw InputError(geometry.string(), 0,
+                         "node " + std::to_string(gmsh_node_tag[n]) +
+                             " has z = " + std::to_string(mesh.node_xyz[3 * n + 2]) +
+                             ": a 2D geometry must lie in the plane z = 0");
+  }
+
+  for (const auto& [entity, range] : entity_cells)
+    orient_cells(mesh, range.first, range.second, options.cell_size, gmsh_node_tag, geometry,
+                 entity);
+
+  // Physical groups: the cells of each group of dimension `dim`, the facets of each group of
+  // dimension `dim - 1`; others (e.g. points) are only listed.
+  gmsh::vectorpair physical;
+  gmsh::model::getPhysicalGroups(physical);
+  for (const auto& [group_dim, group_tag] : physical) {
+    PhysicalGroup group{"", group_dim, group_tag};
+    gmsh::model::getPhysicalName(group_dim, group_tag, group.name);
+    if (group.name.empty()) group.name = std::to_string(group_tag);
+    if (mesh.find_group(group.name, group_dim))
+      throw InputError(geometry.string(), 0,
+                       "two physical groups of dimension " + std::to_string(group_dim) +
+                           " are named \"" + group.name + "\"");
+    std::vector<std::size_t> cells;
+    std::vector<std::int64_t> facets;
+    std::vector<int> group_entities;
+    gmsh::model::getEntitiesForPhysicalGroup(group_dim, group_tag, group_entities);
+    for (int entity : group_entities) {
+      if (group_dim == dim) {
+        for (const auto& [e, range] : entity_cells)
+          if (e == entity)
+            for (std::size_t c = range.first; c < range.second; ++c) cells.push_back(c);
+      } else if (group_dim == dim - 1) {
+        GmshElements e = entity_elements(geometry, group_dim, entity, facet_type, facet_words);
+        for (std::size_t k = 0; k < e.node_tags.size(); ++k) {
+          auto it = node_index.find(e.node_tags[k]);
+          if (it == node_index.end())
+            throw InputError(geometry.string(), 0,
+                             "physical group \"" + group.name + "\": element " +
+                                 std::to_string(e.tags[k / dim]) + " uses node " +
+                                 std::to_string(e.node_tags[k]) + ", which no " +
+                                 std::to_string(dim) +
+                                 "D cell uses (a boundary must lie on the mesh)");
+          facets.push_back(it->second);
+        }
+      }
+    }
+    mesh.groups.push_back(group);
+    mesh.group_cells.push_back(std::move(cells));
+    mesh.group_facets.push_back(std::move(facets));
+  }
+  return mesh;
+}
+
+}  // namespace
+
+Mesh read_gmsh_mesh(const std::filesystem::path& geometry, const MeshingOptions& options) {
+  if (!std::filesystem::is_regular_file(geometry))
+    throw InputError(geometry.string(), 0, "geometry file not found");
+  std::string extension = geometry.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".geo" && extension != ".msh")
+    throw InputError(
+        geometry.string(), 0,
+        "expected a gmsh .geo script or .msh mesh, found extension '" + extension + "'");
+  if (options.dimension != 2 && options.dimension != 3)
+    throw InputError(geometry.string(), 0, "the mesh dimension must be 2 or 3");
+
+  GmshSession session(options.verbose);
+  try {
+    // The scene's cell size caps gmsh's element size; sizes a .geo gives its points may still
+    // refine locally. Set before opening (a .geo may mesh while it is read) and after (a .geo
+    // may set its own value).
+    gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
+    open_without_throwing(geometry);
+    if (extension == ".geo") {
+      gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
+      gmsh::model::mesh::generate(options.dimension);
+    }
+    return read_current_model(geometry, options);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::string& message) {  // how gmsh 4.8 reports errors
+    throw gmsh_error(geometry, message);
+  } catch (const std::exception& e) {
+    throw gmsh_error(geometry, e.what());
+  } catch (...) {
+    std::string message;
+    gmsh::logger::getLastError(message);
+    throw gmsh_error(geometry, message.empty() ? "unknown gmsh error" : message);
+  }
+}
+
+}  // namespace lituya::pre

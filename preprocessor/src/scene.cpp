@@ -1,0 +1,255 @@
+#include "lituya/pre/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "lituya/common/input_error.hpp"
+#include "lituya/common/toml_reader.hpp"
+#include "lituya/pre/seeding.hpp"
+
+namespace lituya::pre {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string quoted_list(const std::vector<std::string>& names) {
+  std::string list;
+  for (const auto& n : names) {
+    if (!list.empty()) list += ", ";
+    list += "\"" + n + "\"";
+  }
+  return list;
+}
+
+void read_mesh_table(const TomlTable& root, const fs::path& scene_file, Scene& scene) {
+  const TomlTable mesh = root.table("mesh");
+  const std::string geometry = mesh.string("geometry");
+  std::string extension = fs::path(geometry).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".geo" && extension != ".msh")
+    mesh.fail(
+        "'mesh.geometry' = \"" + geometry + "\" must be a gmsh .geo script or a .msh mesh file",
+        "geometry");
+  // Relative to the scene file, so a scene folder can be moved or run from anywhere.
+  scene.geometry = scene_file.parent_path() / geometry;
+  if (!fs::is_regular_file(scene.geometry))
+    mesh.fail("geometry file \"" + geometry + "\" not found (looked for " +
+                  scene.geometry.string() + "; the path is relative to the scene file)",
+              "geometry");
+
+  const long long dimension = mesh.integer("dimension");
+  if (dimension != 2 && dimension != 3)
+    mesh.fail("'mesh.dimension' must be 2 (plane strain) or 3", "dimension");
+  scene.dimension = static_cast<int>(dimension);
+  scene.cell_size = mesh.number("cell_size");
+  if (!(scene.cell_size > 0 && std::isfinite(scene.cell_size)))
+    mesh.fail("'mesh.cell_size' must be a positive length in m", "cell_size");
+  const long long points_per_cell = mesh.integer("points_per_cell");
+  if (!is_supported_points_per_cell(scene.dimension, static_cast<int>(points_per_cell)))
+    mesh.fail("'mesh.points_per_cell' = " + std::to_string(points_per_cell) +
+                  " is not available in " + std::to_string(scene.dimension) +
+                  "D; allowed values: " + supported_points_per_cell(scene.dimension),
+              "points_per_cell");
+  scene.points_per_cell = static_cast<int>(points_per_cell);
+
+  // `gravity` belongs to the scene root; a line written under [mesh] (as a reader of the
+  // format example may do) is accepted too, but not both.
+  if (root.has("gravity") && mesh.has("gravity"))
+    mesh.fail("'gravity' is given both at the top of the file and in [mesh]; keep one", "gravity");
+  const TomlTable& owner = mesh.has("gravity") ? mesh : root;
+  scene.gravity = owner.numbers("gravity");
+  if (static_cast<int>(scene.gravity.size()) != scene.dimension)
+    owner.fail("'gravity' must have " + std::to_string(scene.dimension) +
+                   " components (one per axis, m/s2)",
+               "gravity");
+  mesh.finish();
+}
+
+void read_materials(const TomlTable& root, Scene& scene) {
+  for (const TomlTable& t : root.tables("material")) {
+    solver::Material m = solver::read_material(t);
+    for (const auto& other : scene.materials)
+      if (other.name == m.name)
+        t.fail("two [[material]] entries are named '" + m.name + "'", "name");
+    scene.materials.push_back(m);
+  }
+  if (scene.materials.empty())
+    root.fail("no [[material]] given: at least one region needs a material");
+}
+
+// K0 from the material when the region does not give it: Jaky's 1 - sin(phi) for a frictional
+// soil, the laterally confined elastic ratio nu / (1 - nu) otherwise.
+double default_k0(const solver::Material& m) {
+  if (m.model == solver::MaterialModel::kMohrCoulomb)
+    return 1.0 - std::sin(m.friction_angle * kPi / 180.0);
+  return m.poisson_ratio / (1.0 - m.poisson_ratio);
+}
+
+void read_regions(const TomlTable& root, Scene& scene) {
+  std::vector<std::string> material_names;
+  for (const auto& m : scene.materials) material_names.push_back(m.name);
+  std::set<std::string> groups;
+  for (const TomlTable& t : root.tables("region")) {
+    Region r;
+    r.group = t.string("group");
+    r.group_line = t.line_of("group");
+    if (!groups.insert(r.group).second)
+      t.fail("two [[region]] entries fill group '" + r.group + "'", "group");
+    const std::string material = t.string("material");
+    auto it = std::find(material_names.begin(), material_names.end(), material);
+    if (it == material_names.end())
+      t.fail("region '" + r.group + "' uses material '" + material +
+                 "', which no [[material]] defines (defined: " + quoted_list(material_names) + ")",
+             "material");
+    r.material = static_cast<std::size_t>(it - material_names.begin());
+    r.initial_stress = t.choice_or("initial_stress", {"zero", "k0"}, "zero") == "k0"
+                           ? InitialStress::kK0
+                           : InitialStress::kZero;
+    if (r.initial_stress == InitialStress::kK0) {
+      // The overburden is summed along y: the K0 state only makes sense for gravity along -y.
+      const auto& g = scene.gravity;
+      double lateral = std::abs(g[0]) + (scene.dimension == 3 ? std::abs(g[2]) : 0.0);
+      if (!(g[1] < 0) || lateral > 1e-12 * std::abs(g[1]))
+        t.fail("initial_stress = \"k0\" needs gravity along -y (e.g. gravity = [0.0, -9.81" +
+                   std::string(scene.dimension == 3 ? ", 0.0" : "") + "])",
+               "initial_stress");
+      r.k0 = t.has("k0") ? t.number_in("k0", 0.0, 10.0) : default_k0(scene.materials[r.material]);
+    } else if (t.has("k0")) {
+      t.fail("'k0' applies only to initial_stress = \"k0\"", "k0");
+    }
+    t.finish();
+    scene.regions.push_back(r);
+  }
+  if (scene.regions.empty())
+    root.fail("no [[region]] given: name at least one physical group to fill with material");
+}
+
+void read_boundaries_and_stages(const TomlTable& root, Scene& scene) {
+  std::set<std::string> names;
+  for (const TomlTable& t : root.tables("boundary")) {
+    scene.boundaries.push_back(solver::read_boundary(t, scene.dimension));
+    scene.boundary_group_lines.push_back(t.line_of("group"));
+    if (!names.insert(scene.boundaries.back().name).second)
+      t.fail("two [[boundary]] entries are named '" + scene.boundaries.back().name +
+                 "' (give one a different 'name')",
+             t.has("name") ? "name" : "group");
+  }
+  const std::vector<TomlTable> stage_tables = root.tables("stage");
+  for (const TomlTable& t : stage_tables) scene.stages.push_back(solver::read_stage(t));
+  if (scene.stages.empty()) root.fail("no [[stage]] given: nothing to run");
+  solver::check_stage_boundaries(scene.stages, scene.boundaries, stage_tables);
+  if (auto s = root.optional_table("solver")) scene.solver = solver::read_solver_settings(*s);
+  if (auto o = root.optional_table("output")) scene.output = solver::read_output_settings(*o);
+}
+
+// [post] is forwarded as written: `lituya post` owns its keys. The preprocessor checks only
+// what it knows better (stage and material names, that the reference file exists), so such
+// mistakes surface before any solve.
+void read_post(const TomlTable& root, const fs::path& scene_file, Scene& scene) {
+  const std::optional<TomlTable> post = root.optional_table("post");
+  if (!post) return;
+  for (const char* header : {"format", "version"})
+    if (post->has(header))
+      post->fail(std::string("'") + header + "' is written by lituya pre; remove it from [post]",
+                 header);
+  PostSettings settings;
+  // TomlTable validates but does not expose the table, so take the copy from a second parse
+  // (the file parsed once already, so it parses again).
+  const toml::table whole = toml::parse_file(scene_file.string());
+  settings.table = *whole["post"].as_table();
+  if (post->has("stage")) {
+    const std::string stage = post->string("stage");
+    bool found = false;
+    for (const auto& s : scene.stages) found = found || s.name == stage;
+    if (!found) post->fail("'post.stage' = \"" + stage + "\" is not a [[stage]] name", "stage");
+  }
+  if (post->has("track_materials")) {
+    for (const std::string& name : post->strings("track_materials")) {
+      bool found = false;
+      for (const auto& m : scene.materials) found = found || m.name == name;
+      if (!found)
+        post->fail("'post.track_materials' names \"" + name + "\", which is not a [[material]]",
+                   "track_materials");
+    }
+  }
+  if (post->has("reference")) {
+    const std::string reference = post->string("reference");
+    const fs::path file = scene_file.parent_path() / reference;
+    if (!fs::is_regular_file(file))
+      post->fail("reference data \"" + reference + "\" not found (looked for " + file.string() +
+                     "; the path is relative to the scene file)",
+                 "reference");
+    settings.reference_file = file;
+    settings.table.insert_or_assign("reference", file.filename().string());
+  }
+  scene.post = std::move(settings);
+}
+
+}  // namespace
+
+Scene read_scene(const fs::path& scene_file) {
+  const TomlDocument document(scene_file);
+  const TomlTable root = document.root();
+  TomlDocument::check_header(root, "lituya-scene", 1);
+  Scene scene;
+  scene.file = document.file();
+  scene.title = root.string_or("title", "");
+  read_mesh_table(root, scene_file, scene);
+  read_materials(root, scene);
+  read_regions(root, scene);
+  read_boundaries_and_stages(root, scene);
+  read_post(root, scene_file, scene);
+  root.finish();
+  return scene;
+}
+
+namespace {
+[[noreturn]] void missing_group(const Scene& scene, const Mesh& mesh, const std::string& what,
+                                const std::string& group, int group_dim, int line) {
+  std::string message = what + " group '" + group + "' is not a physical group of dimension " +
+                        std::to_string(group_dim) + " in " + scene.geometry.filename().string();
+  for (int other = 0; other <= 3; ++other)
+    if (other != group_dim && mesh.find_group(group, other))
+      message += " (it is a group of dimension " + std::to_string(other) + ")";
+  message += "; the geometry's groups of dimension " + std::to_string(group_dim) +
+             " are: " + mesh.group_names(group_dim);
+  throw InputError(scene.file, line, message);
+}
+}  // namespace
+
+void check_scene_groups(const Scene& scene, const Mesh& mesh) {
+  const int dim = scene.dimension;
+  const std::string geometry = scene.geometry.filename().string();
+
+  std::vector<int> owner(mesh.cell_count(), -1);  // region filling each cell
+  for (std::size_t r = 0; r < scene.regions.size(); ++r) {
+    const Region& region = scene.regions[r];
+    const auto group = mesh.find_group(region.group, dim);
+    if (!group) missing_group(scene, mesh, "region", region.group, dim, region.group_line);
+    if (mesh.group_cells[*group].empty())
+      throw InputError(scene.file, region.group_line,
+                       "region group '" + region.group + "' has no cells in " + geometry);
+    for (std::size_t cell : mesh.group_cells[*group]) {
+      if (owner[cell] >= 0)
+        throw InputError(scene.file, region.group_line,
+                         "regions '" + scene.regions[owner[cell]].group + "' and '" + region.group +
+                             "' overlap (cell of element " +
+                             std::to_string(mesh.cell_element_tags[cell]) +
+                             "); each cell may hold one material");
+      owner[cell] = static_cast<int>(r);
+    }
+  }
+  for (std::size_t b = 0; b < scene.boundaries.size(); ++b) {
+    const auto& boundary = scene.boundaries[b];
+    if (!mesh.find_group(boundary.group, dim - 1))
+      missing_group(scene, mesh, "boundary", boundary.group, dim - 1,
+                    scene.boundary_group_lines[b]);
+  }
+}
+
+}  // namespace lituya::pre

@@ -1,0 +1,24 @@
+// Test geometry: the rectangle [0, 2] x [0, 1] split at x = 1 into two unit squares that
+// share the curve x = 1 (so their meshes conform). Physical groups: surfaces "soil" (left)
+// and "air" (right), curves "bottom" (y = 0, both squares) and "divide" (x = 1).
+Point(1) = {0, 0, 0};
+Point(2) = {1, 0, 0};
+Point(3) = {2, 0, 0};
+Point(4) = {2, 1, 0};
+Point(5) = {1, 1, 0};
+Point(6) = {0, 1, 0};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 5};
+Line(5) = {5, 6};
+Line(6) = {6, 1};
+Line(7) = {2, 5};
+Curve Loop(1) = {1, 7, 5, 6};
+Plane Surface(1) = {1};
+Curve Loop(2) = {2, 3, 4, -7};
+Plane Surface(2) = {2};
+Physical Surface("soil") = {1};
+Physical Surface("air") = {2};
+Physical Curve("bottom") = {1, 2};
+Physical Curve("divide") = {7};

@@ -1,0 +1,180 @@
+#include "lituya/pre/gmsh_mesh.hpp"
+
+#include <cmath>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+
+namespace lituya::pre {
+namespace {
+
+using testing::expect_input_error;
+using testing::test_data;
+
+double total_measure(const Mesh& mesh, const std::vector<std::size_t>& cells) {
+  double sum = 0;
+  for (std::size_t c : cells) sum += signed_cell_measure(mesh, c);
+  return sum;
+}
+
+std::vector<std::size_t> all_cells(const Mesh& mesh) {
+  std::vector<std::size_t> cells(mesh.cell_count());
+  for (std::size_t c = 0; c < cells.size(); ++c) cells[c] = c;
+  return cells;
+}
+
+TEST(GmshMesh, TwoSquaresWithGroups) {
+  const Mesh mesh = read_gmsh_mesh(test_data("two_squares.geo"), {2, 0.25, false});
+  EXPECT_EQ(mesh.dimension, 2);
+  ASSERT_GT(mesh.cell_count(), 16u);
+  EXPECT_EQ(mesh.cell_nodes.size(), 3 * mesh.cell_count());
+
+  // Groups: two surfaces and two curves, with their names and dimensions.
+  ASSERT_EQ(mesh.groups.size(), 4u);
+  const auto soil = mesh.find_group("soil", 2), air = mesh.find_group("air", 2);
+  const auto bottom = mesh.find_group("bottom", 1), divide = mesh.find_group("divide", 1);
+  ASSERT_TRUE(soil && air && bottom && divide);
+  EXPECT_FALSE(mesh.find_group("soil", 1));
+  EXPECT_EQ(mesh.group_names(2), "\"soil\", \"air\"");
+
+  // Every triangle counter-clockwise, areas exact, the two surfaces tile the mesh.
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c) EXPECT_GT(signed_cell_measure(mesh, c), 0);
+  EXPECT_NEAR(total_measure(mesh, all_cells(mesh)), 2.0, 1e-12);
+  EXPECT_NEAR(total_measure(mesh, mesh.group_cells[*soil]), 1.0, 1e-12);
+  EXPECT_NEAR(total_measure(mesh, mesh.group_cells[*air]), 1.0, 1e-12);
+  EXPECT_EQ(mesh.group_cells[*soil].size() + mesh.group_cells[*air].size(), mesh.cell_count());
+  for (std::size_t c : mesh.group_cells[*soil]) EXPECT_LE(cell_centroid(mesh, c)[0], 1.0);
+  for (std::size_t c : mesh.group_cells[*air]) EXPECT_GE(cell_centroid(mesh, c)[0], 1.0);
+  EXPECT_TRUE(mesh.group_facets[*soil].empty());
+  EXPECT_TRUE(mesh.group_cells[*bottom].empty());
+
+  // Nodes: all used, compactly numbered, inside the rectangle, in the plane z = 0.
+  std::set<std::int64_t> used(mesh.cell_nodes.begin(), mesh.cell_nodes.end());
+  EXPECT_EQ(used.size(), mesh.node_count());
+  EXPECT_EQ(*used.begin(), 0);
+  EXPECT_EQ(*used.rbegin(), static_cast<std::int64_t>(mesh.node_count() - 1));
+  for (std::size_t n = 0; n < mesh.node_count(); ++n) {
+    EXPECT_GE(mesh.node_xyz[3 * n], -1e-12);
+    EXPECT_LE(mesh.node_xyz[3 * n], 2 + 1e-12);
+    EXPECT_GE(mesh.node_xyz[3 * n + 1], -1e-12);
+    EXPECT_LE(mesh.node_xyz[3 * n + 1], 1 + 1e-12);
+    EXPECT_EQ(mesh.node_xyz[3 * n + 2], 0.0);
+  }
+
+  // Boundary facets: 2 m of bottom as one polyline at y = 0, and the dividing line x = 1.
+  const auto& facets = mesh.group_facets[*bottom];
+  ASSERT_GE(facets.size(), 2u * 8u);  // at least 2 m / 0.25 m segments
+  std::set<std::int64_t> bottom_nodes(facets.begin(), facets.end());
+  EXPECT_EQ(bottom_nodes.size(), facets.size() / 2 + 1);
+  double length = 0;
+  for (std::size_t k = 0; k < facets.size(); k += 2) {
+    const double* a = &mesh.node_xyz[3 * facets[k]];
+    const double* b = &mesh.node_xyz[3 * facets[k + 1]];
+    EXPECT_EQ(a[1], 0.0);
+    EXPECT_EQ(b[1], 0.0);
+    EXPECT_LE(std::hypot(b[0] - a[0], b[1] - a[1]), 0.25 + 1e-12);
+    length += std::hypot(b[0] - a[0], b[1] - a[1]);
+  }
+  EXPECT_NEAR(length, 2.0, 1e-12);
+  EXPECT_GE(mesh.group_facets[*divide].size(), 2u * 4u);
+  for (std::int64_t n : mesh.group_facets[*divide]) EXPECT_NEAR(mesh.node_xyz[3 * n], 1.0, 1e-12);
+}
+
+TEST(GmshMesh, ClockwiseSurfaceIsReordered) {
+  const Mesh mesh = read_gmsh_mesh(test_data("clockwise_square.geo"), {2, 0.25, false});
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c) EXPECT_GT(signed_cell_measure(mesh, c), 0);
+  EXPECT_NEAR(total_measure(mesh, all_cells(mesh)), 1.0, 1e-12);
+}
+
+TEST(GmshMesh, ClockwiseMshIsReordered) {
+  const Mesh mesh = read_gmsh_mesh(test_data("clockwise.msh"), {2, 1.0, false});
+  ASSERT_EQ(mesh.cell_count(), 2u);
+  EXPECT_EQ(mesh.node_count(), 4u);
+  for (std::size_t c = 0; c < 2; ++c) EXPECT_NEAR(signed_cell_measure(mesh, c), 0.5, 1e-15);
+  const auto bottom = mesh.find_group("bottom", 1);
+  ASSERT_TRUE(bottom);
+  EXPECT_EQ(mesh.group_facets[*bottom].size(), 2u);
+}
+
+TEST(GmshMesh, CubeGivesPositiveTetrahedra) {
+  const Mesh mesh = read_gmsh_mesh(test_data("cube.geo"), {3, 0.25, false});
+  EXPECT_EQ(mesh.dimension, 3);
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c) EXPECT_GT(signed_cell_measure(mesh, c), 0);
+  EXPECT_NEAR(total_measure(mesh, all_cells(mesh)), 1.0, 1e-12);
+  const auto block = mesh.find_group("block", 3), base = mesh.find_group("base", 2);
+  ASSERT_TRUE(block && base);
+  EXPECT_EQ(mesh.group_cells[*block].size(), mesh.cell_count());
+  ASSERT_FALSE(mesh.group_facets[*base].empty());
+  EXPECT_EQ(mesh.group_facets[*base].size() % 3, 0u);
+  for (std::int64_t n : mesh.group_facets[*base]) EXPECT_NEAR(mesh.node_xyz[3 * n + 2], 0.0, 1e-12);
+}
+
+TEST(GmshMesh, MixedOrientationIsAnError) {
+  // Element 5 (nodes 1 4 5) is clockwise among counter-clockwise neighbours.
+  expect_input_error(
+      [] {
+        read_gmsh_mesh(test_data("inverted.msh"), {2, 0.5, false});
+      },
+      "inverted.msh", 0, {"inverted or degenerate element 5", "(nodes 1 4 5)"});
+}
+
+TEST(GmshMesh, NegativeTetrahedronIsAnError) {
+  expect_input_error(
+      [] {
+        read_gmsh_mesh(test_data("inverted_tetra.msh"), {3, 0.5, false});
+      },
+      "inverted_tetra.msh", 0, {"inverted or degenerate element 2", "(nodes 2 4 3 5)"});
+}
+
+TEST(GmshMesh, DegenerateTriangleIsAnError) {
+  expect_input_error(
+      [] {
+        read_gmsh_mesh(test_data("degenerate.msh"), {2, 0.5, false});
+      },
+      "degenerate.msh", 0, {"inverted or degenerate element 4", "(nodes 1 5 2)"});
+}
+
+TEST(GmshMesh, QuadrilateralsAreRejected) {
+  expect_input_error(
+      [] {
+        read_gmsh_mesh(test_data("quads.msh"), {2, 0.5, false});
+      },
+      "quads.msh", 0, {"gmsh type 3", "linear triangles (gmsh type 2)"});
+}
+
+TEST(GmshMesh, WrongDimensionFindsNoCells) {
+  expect_input_error(
+      [] {
+        read_gmsh_mesh(test_data("two_squares.geo"), {3, 0.5, false});
+      },
+      "two_squares.geo", 0, {"no elements of dimension 3"});
+}
+
+TEST(GmshMesh, GeoSyntaxErrorNamesFileAndLine) {
+  expect_input_error(
+      [] {
+        read_gmsh_mesh(test_data("syntax_error.geo"), {2, 0.5, false});
+      },
+      "syntax_error.geo", 2, {"syntax error"});
+}
+
+TEST(GmshMesh, MissingFileIsAnError) {
+  expect_input_error(
+      [] {
+        read_gmsh_mesh(test_data("no_such_file.geo"), {2, 0.5, false});
+      },
+      "no_such_file.geo", 0, {"not found"});
+}
+
+// gmsh is a process-wide singleton: a failed read must leave it usable for the next one.
+TEST(GmshMesh, ReadingAfterAnErrorWorks) {
+  EXPECT_THROW(read_gmsh_mesh(test_data("syntax_error.geo"), {2, 0.5, false}), InputError);
+  EXPECT_THROW(read_gmsh_mesh(test_data("inverted.msh"), {2, 0.5, false}), InputError);
+  const Mesh mesh = read_gmsh_mesh(test_data("two_squares.geo"), {2, 0.5, false});
+  EXPECT_NEAR(total_measure(mesh, all_cells(mesh)), 2.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace lituya::pre

@@ -1,0 +1,241 @@
+// Bad scenes: every error names scene.toml (or the geometry file) and the line, and nothing
+// is written.
+#include "lituya/pre/scene.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "lituya/pre/preprocess.hpp"
+#include "test_support.hpp"
+
+namespace lituya::pre {
+namespace {
+
+using testing::expect_input_error;
+using testing::TempFolder;
+
+const std::string kScene = R"(format = "lituya-scene"
+version = 1
+title = "two squares"
+gravity = [0.0, -9.81]
+
+[mesh]
+geometry = "two_squares.geo"
+dimension = 2
+cell_size = 0.25
+points_per_cell = 4
+
+[[material]]
+name = "sand"
+model = "mohr-coulomb"
+solid_density = 1800.0
+porosity = 0.3
+youngs_modulus = 2.0e7
+poisson_ratio = 0.3
+friction_angle = 30.0
+
+[[region]]
+group = "soil"
+material = "sand"
+initial_stress = "k0"
+
+[[boundary]]
+group = "bottom"
+type = "fixed"
+
+[[stage]]
+name = "gravity"
+type = "quasi-static"
+duration = 0.1
+boundaries = ["bottom"]
+)";
+
+// 1-based line of the first line containing `text`.
+int line_of(const std::string& scene, const std::string& text) {
+  const std::size_t at = scene.find(text);
+  EXPECT_NE(at, std::string::npos) << text;
+  return 1 + static_cast<int>(std::count(scene.begin(), scene.begin() + at, '\n'));
+}
+
+std::string replaced(std::string scene, const std::string& from, const std::string& to) {
+  const std::size_t at = scene.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return scene.replace(at, from.size(), to);
+}
+
+class BadScene : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    for (const char* f : {"two_squares.geo", "syntax_error.geo", "inverted.msh"})
+      std::filesystem::copy_file(testing::test_data(f), folder_ / f);
+  }
+  // Writes `scene`, runs the preprocessor and expects an error about `file` at `line`.
+  std::string expect_error(const std::string& scene, const std::string& file, int line,
+                           const std::vector<std::string>& words) {
+    testing::write_text(folder_ / "scene.toml", scene);
+    const std::string message = expect_input_error(
+        [&] { preprocess(folder_ / "scene.toml", folder_ / "case", false); }, file, line, words);
+    EXPECT_FALSE(std::filesystem::exists(folder_ / "case")) << "a case folder was created";
+    return message;
+  }
+  TempFolder folder_;
+};
+
+TEST_F(BadScene, TheBaseSceneIsValid) {
+  testing::write_text(folder_ / "scene.toml", kScene);
+  const Scene scene = read_scene(folder_ / "scene.toml");
+  EXPECT_EQ(scene.title, "two squares");
+  EXPECT_EQ(scene.geometry, folder_ / "two_squares.geo");
+  EXPECT_EQ(scene.dimension, 2);
+  ASSERT_EQ(scene.regions.size(), 1u);
+  EXPECT_EQ(scene.regions[0].initial_stress, InitialStress::kK0);
+  EXPECT_NEAR(scene.regions[0].k0, 0.5, 1e-15);  // 1 - sin(30 deg)
+  EXPECT_EQ(scene.regions[0].group_line, line_of(kScene, "group = \"soil\""));
+  EXPECT_FALSE(scene.post);
+  const PreprocessSummary summary = preprocess(folder_ / "scene.toml", folder_ / "case", false);
+  EXPECT_EQ(summary.points % 4, 0u);
+  EXPECT_GT(summary.points, summary.cells);      // "soil" is half of the area: about
+  EXPECT_LT(summary.points, 3 * summary.cells);  // 2 points per cell of the whole mesh
+}
+
+TEST_F(BadScene, GravityMayBeWrittenUnderMesh) {
+  const std::string scene =
+      replaced(replaced(kScene, "gravity = [0.0, -9.81]\n", ""), "points_per_cell = 4\n",
+               "points_per_cell = 4\ngravity = [0.0, -9.81]\n");
+  testing::write_text(folder_ / "scene.toml", scene);
+  EXPECT_EQ(read_scene(folder_ / "scene.toml").gravity[1], -9.81);
+}
+
+TEST_F(BadScene, MissingGeometryFile) {
+  const auto scene = replaced(kScene, "\"two_squares.geo\"", "\"nowhere.geo\"");
+  expect_error(scene, "scene.toml", line_of(scene, "nowhere.geo"), {"nowhere.geo", "not found"});
+}
+
+TEST_F(BadScene, GeometryOfAnotherKind) {
+  const auto scene = replaced(kScene, "\"two_squares.geo\"", "\"two_squares.stl\"");
+  expect_error(scene, "scene.toml", line_of(scene, "two_squares.stl"), {".geo", ".msh"});
+}
+
+TEST_F(BadScene, UnknownKey) {
+  const auto scene =
+      replaced(kScene, "friction_angle = 30.0", "friction_angle = 30.0\ncohesoin = 1000.0");
+  expect_error(scene, "scene.toml", line_of(scene, "cohesoin"), {"unknown key 'cohesoin'"});
+}
+
+TEST_F(BadScene, UnknownKeyAtTheTop) {
+  const auto scene = replaced(kScene, "title = \"two squares\"", "titel = \"two squares\"");
+  expect_error(scene, "scene.toml", line_of(scene, "titel"), {"unknown key 'titel'"});
+}
+
+TEST_F(BadScene, UnknownKeyInARegion) {
+  const auto scene = replaced(kScene, "initial_stress = \"k0\"", "initial_stres = \"k0\"");
+  expect_error(scene, "scene.toml", line_of(scene, "initial_stres "), {"initial_stres"});
+}
+
+TEST_F(BadScene, WrongType) {
+  const auto scene = replaced(kScene, "cell_size = 0.25", "cell_size = \"fine\"");
+  expect_error(scene, "scene.toml", line_of(scene, "cell_size"), {"cell_size", "number"});
+}
+
+TEST_F(BadScene, MaterialMissingAParameter) {
+  const auto scene = replaced(kScene, "youngs_modulus = 2.0e7\n", "");
+  expect_error(scene, "scene.toml", line_of(scene, "[[material]]"), {"youngs_modulus"});
+}
+
+TEST_F(BadScene, RegionWithAnUnknownMaterial) {
+  const auto scene = replaced(kScene, "material = \"sand\"", "material = \"clay\"");
+  expect_error(scene, "scene.toml", line_of(scene, "\"clay\""), {"clay", "\"sand\""});
+}
+
+TEST_F(BadScene, RegionGroupThatDoesNotExist) {
+  const auto scene = replaced(kScene, "group = \"soil\"", "group = \"rock\"");
+  expect_error(scene, "scene.toml", line_of(scene, "\"rock\""),
+               {"'rock'", "dimension 2", "two_squares.geo", "\"soil\", \"air\""});
+}
+
+TEST_F(BadScene, RegionGroupOfTheWrongDimension) {
+  const auto scene = replaced(kScene, "group = \"soil\"", "group = \"bottom\"");
+  expect_error(scene, "scene.toml", line_of(scene, "group = \"bottom\""),
+               {"'bottom'", "it is a group of dimension 1"});
+}
+
+TEST_F(BadScene, BoundaryGroupOfTheWrongDimension) {
+  const auto scene = replaced(kScene, "group = \"bottom\"", "name = \"bottom\"\ngroup = \"air\"");
+  expect_error(scene, "scene.toml", line_of(scene, "group = \"air\""),
+               {"boundary group 'air'", "dimension 1", "it is a group of dimension 2",
+                "\"bottom\", \"divide\""});
+}
+
+TEST_F(BadScene, UnsupportedPointsPerCell) {
+  const auto scene = replaced(kScene, "points_per_cell = 4", "points_per_cell = 5");
+  expect_error(scene, "scene.toml", line_of(scene, "points_per_cell"),
+               {"points_per_cell", "1, 3, 4, 9, 16"});
+}
+
+TEST_F(BadScene, StageUsesAnUnknownBoundary) {
+  const auto scene = replaced(kScene, "boundaries = [\"bottom\"]", "boundaries = [\"gate\"]");
+  expect_error(scene, "scene.toml", line_of(scene, "boundaries = "), {"gate"});
+}
+
+TEST_F(BadScene, NoStage) {
+  const auto scene = kScene.substr(0, kScene.find("[[stage]]"));
+  expect_error(scene, "scene.toml", 0, {"no [[stage]]"});
+}
+
+TEST_F(BadScene, NoRegion) {
+  const auto scene = replaced(kScene,
+                              "[[region]]\ngroup = \"soil\"\nmaterial = \"sand\"\n"
+                              "initial_stress = \"k0\"\n",
+                              "");
+  expect_error(scene, "scene.toml", 0, {"no [[region]]"});
+}
+
+TEST_F(BadScene, K0NeedsGravityAlongMinusY) {
+  const auto scene = replaced(kScene, "gravity = [0.0, -9.81]", "gravity = [1.0, -9.81]");
+  expect_error(scene, "scene.toml", line_of(scene, "initial_stress"), {"gravity along -y"});
+}
+
+TEST_F(BadScene, K0ValueWithoutK0Stress) {
+  const auto scene = replaced(kScene, "initial_stress = \"k0\"", "k0 = 0.4");
+  expect_error(scene, "scene.toml", line_of(scene, "k0 = 0.4"), {"'k0'"});
+}
+
+TEST_F(BadScene, GravityWithTheWrongLength) {
+  const auto scene = replaced(kScene, "gravity = [0.0, -9.81]", "gravity = [0.0, -9.81, 0.0]");
+  expect_error(scene, "scene.toml", line_of(scene, "gravity"), {"2 components"});
+}
+
+TEST_F(BadScene, WrongHeader) {
+  const auto scene = replaced(kScene, "lituya-scene", "lituya-stages");
+  expect_error(scene, "scene.toml", 1, {"lituya-scene"});
+}
+
+TEST_F(BadScene, TomlSyntaxError) {
+  const auto scene = replaced(kScene, "dimension = 2", "dimension = ");
+  expect_error(scene, "scene.toml", line_of(scene, "dimension = "), {"TOML syntax error"});
+}
+
+TEST_F(BadScene, PostNamesAnUnknownStage) {
+  const auto scene = kScene + "\n[post]\nstage = \"release\"\n";
+  expect_error(scene, "scene.toml", line_of(scene, "stage = \"release\""), {"release"});
+}
+
+TEST_F(BadScene, PostReferenceMissing) {
+  const auto scene = kScene + "\n[post]\nreference = \"lab.csv\"\n";
+  expect_error(scene, "scene.toml", line_of(scene, "lab.csv"), {"lab.csv", "not found"});
+}
+
+TEST_F(BadScene, GeoSyntaxError) {
+  const auto scene = replaced(kScene, "\"two_squares.geo\"", "\"syntax_error.geo\"");
+  expect_error(scene, "syntax_error.geo", 2, {"syntax error"});
+}
+
+TEST_F(BadScene, InvertedElementInAMsh) {
+  auto scene = replaced(kScene, "\"two_squares.geo\"", "\"inverted.msh\"");
+  scene = replaced(scene, "group = \"soil\"", "group = \"block\"");
+  expect_error(scene, "inverted.msh", 0, {"inverted or degenerate element 5", "(nodes 1 4 5)"});
+}
+
+}  // namespace
+}  // namespace lituya::pre

@@ -1,0 +1,94 @@
+#include "case_support.hpp"
+
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <stdexcept>
+
+#include "lituya/post/postprocess.hpp"
+#include "lituya/pre/preprocess.hpp"
+#include "lituya/solver/solve.hpp"
+
+namespace lituya::verify {
+
+bool CaseResult::passed() const {
+  if (!error.empty() || checks.empty()) return false;
+  for (const Check& c : checks)
+    if (!c.passed) return false;
+  return true;
+}
+
+void add_check(CaseResult& result, const std::string& quantity, const std::string& unit,
+               double measured, double reference, double tolerance) {
+  Check c{quantity, unit, measured, reference, tolerance, false};
+  c.passed = std::isfinite(measured) && std::abs(measured - reference) <= tolerance;
+  result.checks.push_back(c);
+}
+
+std::filesystem::path run_scene(const CaseContext& context) {
+  const auto scene = context.source / (context.full ? "scene_full.toml" : "scene_quick.toml");
+  const auto case_folder = context.work / "case";
+  pre::preprocess(scene, case_folder, /*overwrite=*/true);
+  solver::SolveOptions options;
+  options.threads = context.threads;
+  options.overwrite = true;
+  solver::solve_case(case_folder, options);
+  return case_folder;
+}
+
+std::vector<Frame> read_series(const std::filesystem::path& case_folder, const std::string& stage) {
+  std::vector<Frame> frames;
+  for (const auto& e : post::read_pvd(case_folder / "output" / (stage + "_points.pvd")))
+    frames.push_back({e.time, e.file});
+  return frames;
+}
+
+namespace {
+vtkSmartPointer<vtkUnstructuredGrid> read(const std::filesystem::path& vtu) {
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(vtu.c_str());
+  reader->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
+  if (!grid || grid->GetNumberOfPoints() == 0)
+    throw std::runtime_error("cannot read " + vtu.string());
+  return grid;
+}
+}  // namespace
+
+std::vector<double> read_point_array(const std::filesystem::path& vtu, const std::string& name,
+                                     int& components) {
+  auto grid = read(vtu);
+  vtkDataArray* a = grid->GetPointData()->GetArray(name.c_str());
+  if (!a) throw std::runtime_error(vtu.string() + " has no point array '" + name + "'");
+  components = a->GetNumberOfComponents();
+  std::vector<double> out(static_cast<std::size_t>(a->GetNumberOfTuples()) * components);
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+    for (int k = 0; k < components; ++k) out[i * components + k] = a->GetComponent(i, k);
+  return out;
+}
+
+std::vector<double> read_positions(const std::filesystem::path& vtu) {
+  auto grid = read(vtu);
+  std::vector<double> out(3 * grid->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) grid->GetPoint(i, &out[3 * i]);
+  return out;
+}
+
+void write_csv(const std::filesystem::path& file, const std::string& header,
+               const std::vector<std::vector<double>>& rows) {
+  std::ofstream out(file);
+  out << header << "\n" << std::setprecision(10);
+  for (const auto& row : rows) {
+    for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << row[i];
+    out << "\n";
+  }
+}
+
+}  // namespace lituya::verify
