@@ -63,6 +63,15 @@ inline void rotate_stress(Voigt6& s, const Eigen::Matrix3d& l, double dt) {
   s(5) += rate(0, 2);
 }
 
+// Nodes that hold almost no mass (a point at the far corner of a cell) would get
+// meaningless velocities; their velocity is taken as zero.
+constexpr double kMassFloor = 1e-14;
+
+template <class Vec>
+Vec velocity_from_momentum(const Vec& momentum, double mass) {
+  return mass > kMassFloor ? Vec(momentum / mass) : Vec::Zero();
+}
+
 double wall_seconds() {
   using clock = std::chrono::steady_clock;
   static const auto start = clock::now();
@@ -219,9 +228,6 @@ void Simulation<dim>::points_to_nodes(Transfer what) {
 template <int dim>
 void Simulation<dim>::nodal_update(double dt, double damping) {
   const std::size_t n_nodes = mesh_.node_count();
-  // Nodes that hold almost no mass (a point at the far corner of a cell) would get
-  // meaningless velocities; their velocity is taken as zero.
-  constexpr double kMassFloor = 1e-14;
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i) {
     const double m = grid_.mass[i];
@@ -276,8 +282,7 @@ void Simulation<dim>::remap_momentum() {
   const std::size_t n_nodes = mesh_.node_count();
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i) {
-    const double m = grid_.mass[i];
-    node_velocity_[i] = m > 1e-14 ? Vec(grid_.momentum[i] / m) : Vec::Zero();
+    node_velocity_[i] = velocity_from_momentum(grid_.momentum[i], grid_.mass[i]);
   }
   apply_constraints<dim>(active_constraints_, node_velocity_);
 }
@@ -419,8 +424,7 @@ template <int dim>
 void Simulation<dim>::map_to_grid() {
   points_to_nodes(Transfer::kMassMomentumForce);
   for (std::size_t i = 0; i < mesh_.node_count(); ++i)
-    node_velocity_[i] =
-        grid_.mass[i] > 1e-14 ? Vec(grid_.momentum[i] / grid_.mass[i]) : Vec::Zero();
+    node_velocity_[i] = velocity_from_momentum(grid_.momentum[i], grid_.mass[i]);
 }
 
 template <int dim>
