@@ -18,10 +18,43 @@ toml::array to_array(const std::vector<std::string>& v) {
 }
 }  // namespace
 
+namespace {
+
+// The keys of a water material: eqs. (7), (8) and (17) need rho_w, K_w and mu.
+Material read_water(const TomlTable& t, Material m) {
+  for (const char* k :
+       {"solid_density", "porosity", "youngs_modulus", "poisson_ratio", "friction_angle",
+        "dilatancy_angle", "cohesion", "tensile_strength", "grain_diameter", "max_porosity"})
+    if (t.has(k))
+      t.fail(std::string("'") + k + "' is a soil parameter; material '" + m.name +
+                 "' is water (keys: density, bulk_modulus, viscosity)",
+             k);
+  for (const char* k : {"density", "bulk_modulus", "viscosity"})
+    if (!t.has(k))
+      t.fail("water material '" + m.name + "' is missing '" + k +
+             "' (water needs density in kg/m3, bulk_modulus in Pa and viscosity in Pa s)");
+  m.liquid_density = t.number_in("density", 1e-6, 1e6);
+  m.bulk_modulus = t.number_in("bulk_modulus", 1e-3, 1e15);
+  m.viscosity = t.number_in("viscosity", 0.0, 1e9);
+  t.finish();
+  return m;
+}
+
+}  // namespace
+
 Material read_material(const TomlTable& t) {
   Material m;
   m.name = t.string("name");
-  std::string model = t.choice("model", {"mohr-coulomb", "linear-elastic"});
+  std::string model = t.choice("model", {"mohr-coulomb", "linear-elastic", "water"});
+  if (model == "water") {
+    m.model = MaterialModel::kWater;
+    return read_water(t, m);
+  }
+  for (const char* k : {"density", "bulk_modulus", "viscosity"})
+    if (t.has(k))
+      t.fail(std::string("'") + k + "' is a water parameter; material '" + m.name + "' is " +
+                 model + " (a soil's grain density is 'solid_density')",
+             k);
   m.model = model == "mohr-coulomb" ? MaterialModel::kMohrCoulomb : MaterialModel::kLinearElastic;
   m.solid_density = t.number_in("solid_density", 1e-6, 1e6);
   if (!t.has("porosity")) t.fail("material '" + m.name + "' is missing 'porosity' (in (0, 1))");
@@ -45,6 +78,14 @@ Material read_material(const TomlTable& t) {
                k);
   }
   m.grain_diameter = t.number_in_or("grain_diameter", 1e-9, 10.0, 0.0);
+  if (t.has("max_porosity")) {
+    m.max_porosity = t.number("max_porosity");
+    if (!(m.max_porosity > m.porosity && m.max_porosity <= 1))
+      t.fail("'max_porosity' (n_max) of material '" + m.name +
+                 "' must lie above its initial porosity " + std::to_string(m.porosity) +
+                 " and at most 1",
+             "max_porosity");
+  }
   t.finish();
   return m;
 }
@@ -133,6 +174,12 @@ OutputSettings read_output_settings(const TomlTable& t) {
 }
 
 toml::table to_toml(const Material& m) {
+  if (m.is_liquid())
+    return toml::table{{"name", m.name},
+                       {"model", "water"},
+                       {"density", m.liquid_density},
+                       {"bulk_modulus", m.bulk_modulus},
+                       {"viscosity", m.viscosity}};
   toml::table t{
       {"name", m.name},
       {"model", m.model == MaterialModel::kMohrCoulomb ? "mohr-coulomb" : "linear-elastic"},
@@ -147,6 +194,7 @@ toml::table to_toml(const Material& m) {
     if (m.tensile_strength < 1e299) t.insert("tensile_strength", m.tensile_strength);
   }
   if (m.grain_diameter > 0) t.insert("grain_diameter", m.grain_diameter);
+  if (m.max_porosity < 1) t.insert("max_porosity", m.max_porosity);
   return t;
 }
 
@@ -226,6 +274,8 @@ CaseDescription read_case(const std::string& case_folder) {
   c.geometry_file = (fs::path(case_folder) / root.string("geometry")).string();
   c.points_file = (fs::path(case_folder) / root.string("points")).string();
   c.materials_file = (fs::path(case_folder) / root.string("materials")).string();
+  if (root.has("liquid_points"))
+    c.liquid_points_file = (fs::path(case_folder) / root.string("liquid_points")).string();
   for (const TomlTable& g : root.tables("group")) {
     Group group{g.string("name"), static_cast<int>(g.integer("dimension"))};
     g.finish();

@@ -98,3 +98,69 @@ TEST(CaseDescription, FixityDirectionMustExistInDimension) {
 }
 
 }  // namespace
+
+namespace {
+
+const char* kWater = R"([[material]]
+name = "water"
+model = "water"
+density = 1000.0
+bulk_modulus = 2.15e7
+viscosity = 1.0e-3
+)";
+
+TEST(CaseDescription, ReadsWaterAndMaxPorosity) {
+  auto path = std::filesystem::temp_directory_path() / "lituya_water_ok.toml";
+  std::ofstream(path) << kWater << "\n" << kSand << "max_porosity = 0.5\n";
+  lituya::TomlDocument doc(path);
+  auto tables = doc.root().tables("material");
+  Material water = read_material(tables.at(0));
+  EXPECT_TRUE(water.is_liquid());
+  EXPECT_DOUBLE_EQ(water.bulk_modulus, 2.15e7);
+  EXPECT_DOUBLE_EQ(water.viscosity, 1.0e-3);
+  EXPECT_DOUBLE_EQ(water.liquid_density, 1000.0);
+  Material sand = read_material(tables.at(1));
+  EXPECT_DOUBLE_EQ(sand.max_porosity, 0.5);
+  // Written and read back: the same values (materials.toml is written with to_toml).
+  auto back = std::filesystem::temp_directory_path() / "lituya_water_back.toml";
+  toml::table root;
+  toml::array list;
+  list.push_back(to_toml(water));
+  list.push_back(to_toml(sand));
+  root.insert("material", list);
+  std::ofstream(back) << root;
+  lituya::TomlDocument doc2(back);
+  auto again = doc2.root().tables("material");
+  EXPECT_DOUBLE_EQ(read_material(again.at(0)).bulk_modulus, 2.15e7);
+  EXPECT_DOUBLE_EQ(read_material(again.at(1)).max_porosity, 0.5);
+}
+
+TEST(CaseDescription, WaterErrorsNameFileAndLine) {
+  // A liquid without bulk modulus: named, with what is expected.
+  std::string no_bulk = kWater;
+  no_bulk.replace(no_bulk.find("bulk_modulus = 2.15e7\n"), 22, "");
+  std::string msg = error_reading_material(no_bulk);
+  EXPECT_NE(msg.find("missing 'bulk_modulus'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("lituya_material_test.toml"), std::string::npos) << msg;
+  std::string no_viscosity = kWater;
+  no_viscosity.replace(no_viscosity.find("viscosity = 1.0e-3\n"), 19, "");
+  msg = error_reading_material(no_viscosity);
+  EXPECT_NE(msg.find("missing 'viscosity'"), std::string::npos) << msg;
+  // A soil key on water, and a water key on soil, are errors at their line.
+  msg = error_reading_material(std::string(kWater) + "porosity = 0.4\n");
+  EXPECT_NE(msg.find(":7"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("soil parameter"), std::string::npos) << msg;
+  msg = error_reading_material(std::string(kSand) + "density = 1000.0\n");
+  EXPECT_NE(msg.find(":9"), std::string::npos) << msg;
+  // n_max below the initial porosity (0.4).
+  msg = error_reading_material(std::string(kSand) + "max_porosity = 0.35\n");
+  EXPECT_NE(msg.find(":9"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("max_porosity"), std::string::npos) << msg;
+  // Negative bulk modulus: out of range at its line.
+  std::string negative = kWater;
+  negative.replace(negative.find("2.15e7"), 6, "-1.0");
+  msg = error_reading_material(negative);
+  EXPECT_NE(msg.find(":5"), std::string::npos) << msg;
+}
+
+}  // namespace

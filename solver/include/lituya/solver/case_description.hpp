@@ -12,7 +12,9 @@
 
 namespace lituya::solver {
 
-enum class MaterialModel { kLinearElastic, kMohrCoulomb };
+// Soil skeletons (solid points) are linear elastic or Mohr-Coulomb; water (liquid points) is a
+// weakly compressible Newtonian liquid, eqs. (7), (8), (17).
+enum class MaterialModel { kLinearElastic, kMohrCoulomb, kWater };
 
 struct Material {
   std::string name;
@@ -26,7 +28,16 @@ struct Material {
   double cohesion = 0;          // Pa
   double tensile_strength = 0;  // Pa (apex value c cot(phi) when not given)
   double grain_diameter = 0;    // m, D_p in eq. (24); 0 = not given
+  // n_max: above it the soil grains separate, the effective stress vanishes and the soil-water
+  // mixture flows like a liquid (section 2.3 of the paper). 1 = never.
+  double max_porosity = 1.0;
 
+  // Water only (model kWater):
+  double liquid_density = 0;  // kg/m3, intrinsic rho_w at zero pressure, eq. (2)
+  double bulk_modulus = 0;    // Pa, K_w of eq. (7); a reduced value is a speed knob
+  double viscosity = 0;       // Pa s, dynamic viscosity mu of eqs. (17) and (23)
+
+  bool is_liquid() const { return model == MaterialModel::kWater; }
   // Dry bulk density (1 - n0) rho_s: the apparent solid density of eq. (1).
   double dry_density() const { return (1.0 - porosity) * solid_density; }
 };
@@ -101,6 +112,7 @@ struct CaseDescription {
   int dimension = 2;
   std::vector<double> gravity;  // `dimension` components
   std::string geometry_file, points_file, materials_file;
+  std::string liquid_points_file;  // empty: a dry case (no liquid phase is allocated)
   std::vector<Group> groups;
   std::vector<Material> materials;
   std::vector<BoundaryCondition> boundaries;
