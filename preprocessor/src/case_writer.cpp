@@ -102,6 +102,19 @@ void write_points(const MaterialPoints& points, const fs::path& file) {
   vtu.write(file);
 }
 
+void write_liquid_points(const LiquidPoints& points, const fs::path& file) {
+  VtuWriter vtu;
+  vtu.set_points(points.position);
+  vtu.set_vertex_cells();
+  vtu.add_point_data("material", points.material);
+  vtu.add_point_data("volume", 1, points.volume);
+  vtu.add_point_data("mass", 1, points.mass);
+  vtu.add_point_data("pressure", 1, points.pressure);
+  vtu.add_point_data("velocity", 3, points.velocity);
+  vtu.add_point_data("cell", points.cell);
+  vtu.write(file);
+}
+
 void write_materials(const Scene& scene, const fs::path& file) {
   std::vector<toml::table> materials;
   for (const auto& m : scene.materials) materials.push_back(solver::to_toml(m));
@@ -110,7 +123,8 @@ void write_materials(const Scene& scene, const fs::path& file) {
   out.close();
 }
 
-void write_stages(const Scene& scene, const Mesh& mesh, const fs::path& file) {
+void write_stages(const Scene& scene, const Mesh& mesh, bool has_liquid_points,
+                  const fs::path& file) {
   toml::array gravity;
   for (double g : scene.gravity) gravity.push_back(g);
   std::vector<toml::table> groups, boundaries, stages;
@@ -121,11 +135,13 @@ void write_stages(const Scene& scene, const Mesh& mesh, const fs::path& file) {
 
   // Section by section, so the file reads in the order of the format description.
   TomlFile out(file, "lituya-stages");
-  out.add(toml::table{{"dimension", scene.dimension},
-                      {"gravity", gravity},
-                      {"geometry", kGeometryFile},
-                      {"points", kPointsFile},
-                      {"materials", kMaterialsFile}});
+  toml::table files{{"dimension", scene.dimension},
+                    {"gravity", gravity},
+                    {"geometry", kGeometryFile},
+                    {"points", kPointsFile}};
+  if (has_liquid_points) files.insert("liquid_points", kLiquidPointsFile);
+  files.insert("materials", kMaterialsFile);
+  out.add(files);
   out.add(toml::table{{"group", array_of(groups)}});
   out.add(toml::table{{"solver", solver::to_toml(scene.solver)}});
   out.add(toml::table{{"output", solver::to_toml(scene.output)}});

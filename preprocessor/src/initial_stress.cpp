@@ -56,10 +56,16 @@ std::pair<double, double> vertical_chord(const Mesh& mesh, std::size_t cell, dou
 
 std::vector<double> overburden_pressure(const Mesh& mesh, const std::vector<double>& cell_density,
                                         const MaterialPoints& points, double gravity) {
+  return overburden_pressure(mesh, cell_density, points.position, gravity);
+}
+
+std::vector<double> overburden_pressure(const Mesh& mesh, const std::vector<double>& cell_density,
+                                        std::span<const double> position, double gravity) {
   const int dim = mesh.dimension;
   const int corners = mesh.nodes_per_cell();
-  std::vector<double> overburden(points.size(), 0.0);
-  if (points.size() == 0) return overburden;
+  const std::size_t count = position.size() / 3;
+  std::vector<double> overburden(count, 0.0);
+  if (count == 0) return overburden;
 
   // Index the cells that carry material by the vertical columns their bounding boxes touch,
   // columns as wide as a typical cell, so each point looks at a few dozen cells.
@@ -95,10 +101,10 @@ std::vector<double> overburden_pressure(const Mesh& mesh, const std::vector<doub
   // A vertical line through a mesh edge (or a 3D face) would be counted by both cells that
   // share it; moving it by a negligible, fixed amount puts it inside exactly one of them.
   const double nudge = 1e-9 * column_width;
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    const double x = points.position[3 * p] + nudge;
-    const double y = points.position[3 * p + 1];
-    const double z = dim == 3 ? points.position[3 * p + 2] + 0.7 * nudge : 0.0;
+  for (std::size_t p = 0; p < count; ++p) {
+    const double x = position[3 * p] + nudge;
+    const double y = position[3 * p + 1];
+    const double z = dim == 3 ? position[3 * p + 2] + 0.7 * nudge : 0.0;
     auto found = columns.find({column(x), dim == 3 ? column(z) : 0});
     if (found == columns.end()) continue;
     double weight = 0;  // integral of rho dy above the point, kg/m2
@@ -113,14 +119,14 @@ std::vector<double> overburden_pressure(const Mesh& mesh, const std::vector<doub
   return overburden;
 }
 
-void set_k0_stress(MaterialPoints& points, const std::vector<double>& overburden, std::size_t begin,
-                   std::size_t end, double k0) {
+void set_k0_stress(MaterialPoints& points, const std::vector<double>& vertical_effective,
+                   std::size_t begin, std::size_t end, double k0) {
   for (std::size_t p = begin; p < end; ++p) {
     double* stress = &points.stress[6 * p];
-    const double vertical = -overburden[p];  // compression is negative
-    stress[0] = k0 * vertical;               // xx
-    stress[1] = vertical;                    // yy
-    stress[2] = k0 * vertical;               // zz (also out of plane in plane strain)
+    const double vertical = -vertical_effective[p];  // compression is negative
+    stress[0] = k0 * vertical;                       // xx
+    stress[1] = vertical;                            // yy
+    stress[2] = k0 * vertical;                       // zz (also out of plane in plane strain)
     stress[3] = stress[4] = stress[5] = 0.0;
   }
 }

@@ -90,6 +90,104 @@ double default_k0(const solver::Material& m) {
   return m.poisson_ratio / (1.0 - m.poisson_ratio);
 }
 
+// The overburden integrals behind the K0 stress and the hydrostatic water pressure run along
+// y: they only make sense for gravity along -y.
+// `what` names the setting in the message, e.g. initial_stress = "k0".
+void require_gravity_along_minus_y(const TomlTable& t, const Scene& scene,
+                                   const std::string& what) {
+  const auto& g = scene.gravity;
+  const double lateral = std::abs(g[0]) + (scene.dimension == 3 ? std::abs(g[2]) : 0.0);
+  if (!(g[1] < 0) || lateral > 1e-12 * std::abs(g[1]))
+    t.fail(what + " needs gravity along -y (e.g. gravity = [0.0, -9.81" +
+               std::string(scene.dimension == 3 ? ", 0.0" : "") +
+               "]); with other gravity use initial_stress = \"zero\"",
+           "initial_stress");
+}
+
+std::string model_name(const solver::Material& m) {
+  switch (m.model) {
+    case solver::MaterialModel::kMohrCoulomb:
+      return "mohr-coulomb";
+    case solver::MaterialModel::kLinearElastic:
+      return "linear-elastic";
+    case solver::MaterialModel::kWater:
+      return "water";
+  }
+  return "?";
+}
+
+// A region whose material is water: free water, seeded with liquid points only. It has no
+// effective stress, so no K0; it starts at the hydrostatic pressure unless told otherwise.
+void read_free_water_region(const TomlTable& t, const Scene& scene, Region& r) {
+  const solver::Material& water = scene.materials[r.material];
+  if (t.has("water"))
+    t.fail("'water' fills the pores of a soil region; region '" + r.group +
+               "' is free water already (its material '" + water.name + "' is water)",
+           "water");
+  const std::string initial =
+      t.choice_or("initial_stress", {"hydrostatic", "zero", "k0"}, "hydrostatic");
+  if (initial == "k0")
+    t.fail("initial_stress = \"k0\" is the geostatic stress of soil; region '" + r.group +
+               "' is water (material '" + water.name +
+               "'): use \"hydrostatic\" (the default) or \"zero\"",
+           "initial_stress");
+  if (t.has("k0"))
+    t.fail("'k0' applies to soil regions; region '" + r.group + "' is water (material '" +
+               water.name + "'), which carries no effective stress",
+           "k0");
+  r.initial_stress = initial == "zero" ? InitialStress::kZero : InitialStress::kHydrostatic;
+  if (r.initial_stress == InitialStress::kHydrostatic)
+    require_gravity_along_minus_y(t, scene,
+                                  t.has("initial_stress")
+                                      ? "initial_stress = \"hydrostatic\""
+                                      : "initial_stress = \"hydrostatic\" (the default for water)");
+}
+
+// A soil region: solid points, and with `water` also the pore water (saturated soil).
+void read_soil_region(const TomlTable& t, const Scene& scene, Region& r) {
+  const solver::Material& soil = scene.materials[r.material];
+  const std::string initial = t.choice_or("initial_stress", {"zero", "k0", "hydrostatic"}, "zero");
+  if (initial == "hydrostatic")
+    t.fail("initial_stress = \"hydrostatic\" applies to free water; region '" + r.group +
+               "' is soil (material '" + soil.name +
+               "'): use \"k0\" (a saturated soil then also starts at a hydrostatic pore "
+               "pressure) or \"zero\"",
+           "initial_stress");
+  r.initial_stress = initial == "k0" ? InitialStress::kK0 : InitialStress::kZero;
+  if (r.initial_stress == InitialStress::kK0) {
+    require_gravity_along_minus_y(t, scene, "initial_stress = \"k0\"");
+    r.k0 = t.has("k0") ? t.number_in("k0", 0.0, 10.0) : default_k0(soil);
+  } else if (t.has("k0")) {
+    t.fail("'k0' applies only to initial_stress = \"k0\"", "k0");
+  }
+
+  if (!t.has("water")) return;
+  const std::string name = t.string("water");
+  std::vector<std::string> water_names;
+  for (const auto& m : scene.materials)
+    if (m.is_liquid()) water_names.push_back(m.name);
+  std::size_t index = 0;
+  while (index < scene.materials.size() && scene.materials[index].name != name) ++index;
+  if (index == scene.materials.size())
+    t.fail("region '" + r.group + "' is saturated with '" + name +
+               "', which no [[material]] defines (water materials: " +
+               (water_names.empty() ? std::string("none") : quoted_list(water_names)) + ")",
+           "water");
+  const solver::Material& water = scene.materials[index];
+  if (!water.is_liquid())
+    t.fail("'water' of region '" + r.group + "' names material '" + name + "', which is " +
+               model_name(water) + ", not water (a material with model = \"water\")",
+           "water");
+  // The drag between the skeleton and its pore water, eq. (23), needs the permeability of
+  // eq. (24), and that needs the grain diameter.
+  if (!(soil.grain_diameter > 0))
+    t.fail("region '" + r.group + "' is saturated, but its soil '" + soil.name +
+               "' has no 'grain_diameter': the drag between soil and pore water (eq. (23)) "
+               "needs the mean grain diameter D_p for the Kozeny-Carman permeability (eq. (24))",
+           "water");
+  r.pore_water = index;
+}
+
 void read_regions(const TomlTable& root, Scene& scene) {
   std::vector<std::string> material_names;
   for (const auto& m : scene.materials) material_names.push_back(m.name);
@@ -107,21 +205,11 @@ void read_regions(const TomlTable& root, Scene& scene) {
                  "', which no [[material]] defines (defined: " + quoted_list(material_names) + ")",
              "material");
     r.material = static_cast<std::size_t>(it - material_names.begin());
-    r.initial_stress = t.choice_or("initial_stress", {"zero", "k0"}, "zero") == "k0"
-                           ? InitialStress::kK0
-                           : InitialStress::kZero;
-    if (r.initial_stress == InitialStress::kK0) {
-      // The overburden is summed along y: the K0 state only makes sense for gravity along -y.
-      const auto& g = scene.gravity;
-      double lateral = std::abs(g[0]) + (scene.dimension == 3 ? std::abs(g[2]) : 0.0);
-      if (!(g[1] < 0) || lateral > 1e-12 * std::abs(g[1]))
-        t.fail("initial_stress = \"k0\" needs gravity along -y (e.g. gravity = [0.0, -9.81" +
-                   std::string(scene.dimension == 3 ? ", 0.0" : "") + "])",
-               "initial_stress");
-      r.k0 = t.has("k0") ? t.number_in("k0", 0.0, 10.0) : default_k0(scene.materials[r.material]);
-    } else if (t.has("k0")) {
-      t.fail("'k0' applies only to initial_stress = \"k0\"", "k0");
-    }
+    // Solid points come only from soils, liquid points only from water.
+    if (scene.materials[r.material].is_liquid())
+      read_free_water_region(t, scene, r);
+    else
+      read_soil_region(t, scene, r);
     t.finish();
     scene.regions.push_back(r);
   }
@@ -191,6 +279,17 @@ void read_post(const TomlTable& root, const fs::path& scene_file, Scene& scene) 
 }
 
 }  // namespace
+
+const solver::Material* Scene::water_of(const Region& r) const {
+  if (is_free_water(r)) return &materials[r.material];
+  return r.pore_water ? &materials[*r.pore_water] : nullptr;
+}
+
+bool Scene::has_water() const {
+  for (const Region& r : regions)
+    if (water_of(r)) return true;
+  return false;
+}
 
 Scene read_scene(const fs::path& scene_file) {
   const TomlDocument document(scene_file);

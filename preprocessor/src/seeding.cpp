@@ -90,8 +90,12 @@ std::vector<Barycentric> seed_pattern(int dimension, int n) {
   return red_refined_tetrahedron();
 }
 
-void seed_cells(const Mesh& mesh, const std::vector<std::size_t>& cells, int points_per_cell,
-                double dry_density, std::int32_t material_id, MaterialPoints& points) {
+namespace {
+// Calls add(xyz, mixture_volume, cell) for the `points_per_cell` seeding positions of each of
+// `cells`; each position stands for an equal share of its cell's volume.
+template <typename Add>
+void for_each_seed(const Mesh& mesh, const std::vector<std::size_t>& cells, int points_per_cell,
+                   Add add) {
   const std::vector<Barycentric> pattern = seed_pattern(mesh.dimension, points_per_cell);
   const int corners = mesh.nodes_per_cell();
   for (std::size_t cell : cells) {
@@ -102,9 +106,28 @@ void seed_cells(const Mesh& mesh, const std::vector<std::size_t>& cells, int poi
       for (int c = 0; c < corners; ++c)
         for (int k = 0; k < 3; ++k)
           xyz[k] += weights[c] * mesh.node_xyz[3 * static_cast<std::size_t>(nodes[c]) + k];
-      points.add(xyz, volume, dry_density * volume, material_id, static_cast<std::int32_t>(cell));
+      add(xyz, volume, static_cast<std::int32_t>(cell));
     }
   }
+}
+}  // namespace
+
+void seed_cells(const Mesh& mesh, const std::vector<std::size_t>& cells, int points_per_cell,
+                double dry_density, std::int32_t material_id, MaterialPoints& points) {
+  for_each_seed(mesh, cells, points_per_cell,
+                [&](const double xyz[3], double volume, std::int32_t cell) {
+                  points.add(xyz, volume, dry_density * volume, material_id, cell);
+                });
+}
+
+void seed_liquid_cells(const Mesh& mesh, const std::vector<std::size_t>& cells, int points_per_cell,
+                       double porosity, double liquid_density, std::int32_t material_id,
+                       LiquidPoints& points) {
+  for_each_seed(mesh, cells, points_per_cell,
+                [&](const double xyz[3], double volume, std::int32_t cell) {
+                  const double water_volume = porosity * volume;
+                  points.add(xyz, water_volume, liquid_density * water_volume, material_id, cell);
+                });
 }
 
 }  // namespace lituya::pre

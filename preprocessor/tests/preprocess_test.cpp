@@ -16,11 +16,16 @@
 
 #include "lituya/solver/case_description.hpp"
 #include "test_support.hpp"
+#include "vtk_support.hpp"
 
 namespace lituya::pre {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::barycentric;
+using testing::point_array;
+using testing::read_vtu;
+using testing::sum_of;
 using testing::TempFolder;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -31,64 +36,6 @@ constexpr double kColumnDensity = 0.7 * 1500.0, kLayerDensity = 0.7 * 1800.0;  /
 
 fs::path example(const std::string& name) {
   return testing::source_dir() / "examples" / name;
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const fs::path& file) {
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  return reader->GetOutput();
-}
-
-vtkDataArray* point_array(vtkUnstructuredGrid* grid, const char* name, int components) {
-  vtkDataArray* a = grid->GetPointData()->GetArray(name);
-  EXPECT_NE(a, nullptr) << name;
-  if (a) {
-    EXPECT_EQ(a->GetNumberOfComponents(), components) << name;
-  }
-  return a;
-}
-
-double sum_of(vtkDataArray* a) {
-  double s = 0;
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) s += a->GetComponent(i, 0);
-  return s;
-}
-
-// Barycentric coordinates of point p in cell c of the geometry (2D triangles or tetrahedra).
-std::vector<double> barycentric(vtkUnstructuredGrid* geometry, vtkIdType cell, const double* p,
-                                int dimension) {
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  vtkNew<vtkIdList> list;
-  geometry->GetCellPoints(cell, list);
-  n = list->GetNumberOfIds();
-  ids = list->GetPointer(0);
-  double x[4][3];
-  for (int i = 0; i < n; ++i) geometry->GetPoint(ids[i], x[i]);
-  auto det3 = [](const double* a, const double* b, const double* c) {
-    return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-           a[2] * (b[0] * c[1] - b[1] * c[0]);
-  };
-  if (dimension == 2) {
-    auto area = [](const double* a, const double* b, const double* c) {
-      return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    };
-    const double total = area(x[0], x[1], x[2]);
-    return {area(p, x[1], x[2]) / total, area(x[0], p, x[2]) / total, area(x[0], x[1], p) / total};
-  }
-  auto volume = [&](const double* a, const double* b, const double* c, const double* d) {
-    double e1[3], e2[3], e3[3];
-    for (int k = 0; k < 3; ++k) {
-      e1[k] = b[k] - a[k];
-      e2[k] = c[k] - a[k];
-      e3[k] = d[k] - a[k];
-    }
-    return det3(e1, e2, e3);
-  };
-  const double total = volume(x[0], x[1], x[2], x[3]);
-  return {volume(p, x[1], x[2], x[3]) / total, volume(x[0], p, x[2], x[3]) / total,
-          volume(x[0], x[1], p, x[3]) / total, volume(x[0], x[1], x[2], p) / total};
 }
 
 struct CaseCheck {
@@ -105,6 +52,11 @@ void check_case_a(const fs::path& folder, const PreprocessSummary& summary,
   // The solver's own reader accepts stages.toml and materials.toml.
   const solver::CaseDescription c = solver::read_case(folder.string());
   EXPECT_EQ(c.dimension, dim);
+  // A dry case: no liquid points, no liquid_points.vtu and no `liquid_points` key.
+  EXPECT_EQ(summary.liquid_points, 0u);
+  EXPECT_FALSE(fs::exists(folder / "liquid_points.vtu"));
+  EXPECT_EQ(testing::read_bytes(folder / "stages.toml").find("liquid_points"), std::string::npos);
+  EXPECT_TRUE(c.liquid_points_file.empty());
   EXPECT_EQ(c.gravity[1], -9.81);
   ASSERT_EQ(c.materials.size(), 2u);
   EXPECT_EQ(c.materials[0].name, "column");

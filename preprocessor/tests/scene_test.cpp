@@ -237,5 +237,98 @@ TEST_F(BadScene, InvertedElementInAMsh) {
   expect_error(scene, "inverted.msh", 0, {"inverted or degenerate element 5", "(nodes 1 4 5)"});
 }
 
+// Scenes with water: the "air" square holds free water, the "soil" square saturated sand.
+const std::string kWaterMaterial = R"([[material]]
+name = "water"
+model = "water"
+density = 1000.0
+bulk_modulus = 2.0e6
+viscosity = 1.0e-3
+
+)";
+
+// kScene with a water material, the sand given a grain diameter, `soil_region_extra` appended
+// to the soil region and a free-water region `water_region` (its keys after group) added.
+std::string water_scene(const std::string& soil_region_extra, const std::string& water_region,
+                        bool grain_diameter = true) {
+  std::string scene = replaced(kScene, "[[region]]", kWaterMaterial + "[[region]]");
+  if (grain_diameter)
+    scene = replaced(scene, "friction_angle = 30.0\n",
+                     "friction_angle = 30.0\ngrain_diameter = 0.001\n");
+  scene = replaced(scene, "initial_stress = \"k0\"\n",
+                   "initial_stress = \"k0\"\n" + soil_region_extra +
+                       "\n[[region]]\ngroup = \"air\"\n" + water_region);
+  return scene;
+}
+
+TEST_F(BadScene, SaturatedSoilAndFreeWater) {
+  const std::string scene = water_scene("water = \"water\"\n", "material = \"water\"\n");
+  testing::write_text(folder_ / "scene.toml", scene);
+  const Scene s = read_scene(folder_ / "scene.toml");
+  ASSERT_EQ(s.regions.size(), 2u);
+  ASSERT_TRUE(s.regions[0].pore_water);
+  EXPECT_EQ(*s.regions[0].pore_water, 1u);
+  EXPECT_FALSE(s.is_free_water(s.regions[0]));
+  EXPECT_TRUE(s.is_free_water(s.regions[1]));
+  EXPECT_FALSE(s.regions[1].pore_water);
+  EXPECT_EQ(s.regions[1].initial_stress, InitialStress::kHydrostatic);  // the water default
+  EXPECT_TRUE(s.has_water());
+  const PreprocessSummary summary = preprocess(folder_ / "scene.toml", folder_ / "case", false);
+  EXPECT_GT(summary.liquid_points, summary.points);  // pore water + free water
+  EXPECT_TRUE(std::filesystem::exists(folder_ / "case" / "liquid_points.vtu"));
+  const toml::table stages = toml::parse_file((folder_ / "case" / "stages.toml").string());
+  EXPECT_EQ(stages["liquid_points"].value<std::string>(), "liquid_points.vtu");
+}
+
+TEST_F(BadScene, WaterNamesAnUnknownMaterial) {
+  const auto scene = water_scene("water = \"sea\"\n", "material = \"water\"\n");
+  expect_error(scene, "scene.toml", line_of(scene, "water = \"sea\""),
+               {"'soil'", "'sea'", "water materials: \"water\""});
+}
+
+TEST_F(BadScene, WaterNamesASoil) {
+  const auto scene = water_scene("water = \"sand\"\n", "material = \"water\"\n");
+  expect_error(scene, "scene.toml", line_of(scene, "water = \"sand\""),
+               {"'sand'", "mohr-coulomb", "not water"});
+}
+
+TEST_F(BadScene, WaterOnAWaterRegion) {
+  const auto scene = water_scene("", "material = \"water\"\nwater = \"water\"\n");
+  expect_error(scene, "scene.toml", line_of(scene, "water = \"water\""),
+               {"'air'", "free water already"});
+}
+
+TEST_F(BadScene, K0OnAWaterRegion) {
+  const auto scene = water_scene("", "material = \"water\"\nk0 = 0.5\n");
+  expect_error(scene, "scene.toml", line_of(scene, "k0 = 0.5"), {"'k0'", "'air'", "water"});
+}
+
+TEST_F(BadScene, K0StressOnAWaterRegion) {
+  const auto scene = water_scene("", "material = \"water\"\ninitial_stress = \"k0\"\n");
+  const int line = line_of(scene, "material = \"water\"\ninitial_stress") + 1;
+  expect_error(scene, "scene.toml", line, {"\"k0\"", "'air'", "\"hydrostatic\""});
+}
+
+TEST_F(BadScene, HydrostaticOnASoilRegion) {
+  const auto scene = replaced(water_scene("", "material = \"water\"\n"), "initial_stress = \"k0\"",
+                              "initial_stress = \"hydrostatic\"");
+  expect_error(scene, "scene.toml", line_of(scene, "\"hydrostatic\""),
+               {"'soil'", "free water", "\"k0\""});
+}
+
+TEST_F(BadScene, SaturatedSoilNeedsGrainDiameter) {
+  const auto scene = water_scene("water = \"water\"\n", "material = \"water\"\n", false);
+  expect_error(scene, "scene.toml", line_of(scene, "water = \"water\""),
+               {"'sand'", "grain_diameter", "eq. (23)", "eq. (24)"});
+}
+
+TEST_F(BadScene, HydrostaticNeedsGravityAlongMinusY) {
+  auto scene = water_scene("", "material = \"water\"\n");
+  scene = replaced(scene, "initial_stress = \"k0\"", "initial_stress = \"zero\"");
+  scene = replaced(scene, "gravity = [0.0, -9.81]", "gravity = [1.0, -9.81]");
+  expect_error(scene, "scene.toml", line_of(scene, "group = \"air\"") - 1,
+               {"\"hydrostatic\"", "gravity along -y", "\"zero\""});
+}
+
 }  // namespace
 }  // namespace lituya::pre

@@ -37,6 +37,7 @@ Simulation<dim> make_box_simulation(const BoxScene<dim>& scene) {
   description.dimension = dim;
   description.gravity = scene.gravity;
   description.materials = {scene.material};
+  if (scene.with_water) description.materials.push_back(scene.water);
   description.solver = scene.solver;
   std::vector<NodalConstraint<dim>> constraints;
   const double tolerance = 1e-9 * scene.domain_size.maxCoeff();
@@ -53,34 +54,56 @@ Simulation<dim> make_box_simulation(const BoxScene<dim>& scene) {
     constraints.push_back(make_constraint<dim>(named, facets, mesh, "box scene"));
   }
   MaterialPoints<dim> points;
+  LiquidPoints<dim> liquid;
   const double density = scene.material.dry_density();
+  const double rho_w = scene.water.liquid_density;
+  const double buoyant_density =
+      scene.with_water ? density - (1.0 - scene.material.porosity) * rho_w : density;
+  auto inside = [](const Vec& x, const Vec& lo, const Vec& hi) {
+    return !(x.array() < lo.array()).any() && !(x.array() > hi.array()).any();
+  };
   const double g = Eigen::Map<const Vec>(scene.gravity.data()).norm();
   const auto local = pattern<dim>(scene.points_per_cell);
   for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
     Vec centroid = Vec::Zero();
     for (int n : mesh.cell_nodes[c]) centroid += mesh.node_position[n];
     centroid /= dim + 1;
-    if ((centroid.array() < scene.block_min.array()).any() ||
-        (centroid.array() > scene.block_max.array()).any())
-      continue;
+    const bool solid = inside(centroid, scene.block_min, scene.block_max);
+    const bool wet = scene.with_water && inside(centroid, scene.water_min, scene.water_max);
     for (const auto& l : local) {
       Vec x = Vec::Zero();
       for (int i = 0; i <= dim; ++i) x += l(i) * mesh.node_position[mesh.cell_nodes[c][i]];
-      const std::size_t p = points.size();
-      points.resize(p + 1);
-      points.position[p] = x;
-      points.volume[p] = mesh.cell_volume[c] / static_cast<double>(local.size());
-      points.mass[p] = density * points.volume[p];
-      points.cell[p] = static_cast<int>(c);
-      points.id[p] = static_cast<int>(p);
-      if (scene.k0 >= 0) {
-        const double sigma_v = -density * g * (scene.block_max(1) - x(1));
-        points.stress[p] << scene.k0 * sigma_v, sigma_v, scene.k0 * sigma_v, 0, 0, 0;
+      const double volume = mesh.cell_volume[c] / static_cast<double>(local.size());
+      if (solid) {
+        const std::size_t p = points.size();
+        points.resize(p + 1);
+        points.position[p] = x;
+        points.volume[p] = volume;
+        points.mass[p] = density * volume;
+        points.cell[p] = static_cast<int>(c);
+        points.id[p] = static_cast<int>(p);
+        if (scene.k0 >= 0) {
+          const double sigma_v = -buoyant_density * g * (scene.block_max(1) - x(1));
+          points.stress[p] << scene.k0 * sigma_v, sigma_v, scene.k0 * sigma_v, 0, 0, 0;
+        }
+      }
+      if (wet) {
+        const double n = solid ? scene.material.porosity : 1.0;
+        const std::size_t q = liquid.size();
+        liquid.resize(q + 1);
+        liquid.position[q] = x;
+        liquid.velocity[q] = scene.water_velocity;
+        liquid.volume[q] = n * volume;
+        liquid.mass[q] = rho_w * n * volume;
+        liquid.pressure[q] = rho_w * g * (scene.water_max(1) - x(1));
+        liquid.material[q] = 1;
+        liquid.cell[q] = static_cast<int>(c);
+        liquid.id[q] = static_cast<int>(q);
       }
     }
   }
   return Simulation<dim>(std::move(description), std::move(mesh), std::move(points),
-                         std::move(constraints));
+                         std::move(constraints), std::move(liquid));
 }
 
 template Simulation<2> make_box_simulation<2>(const BoxScene<2>&);

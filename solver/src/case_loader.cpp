@@ -18,7 +18,7 @@ namespace lituya::solver {
 
 namespace {
 
-vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const std::string& file) {
+vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const std::string& file, bool may_be_empty = false) {
   if (!std::filesystem::exists(file))
     throw InputError(file, 0, "not found: is this a case folder written by `lituya pre`?");
   vtkObject::GlobalWarningDisplayOff();
@@ -26,7 +26,7 @@ vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const std::string& file) {
   reader->SetFileName(file.c_str());
   reader->Update();
   vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
-  if (reader->GetErrorCode() != 0 || !grid || grid->GetNumberOfPoints() == 0)
+  if (reader->GetErrorCode() != 0 || !grid || (!may_be_empty && grid->GetNumberOfPoints() == 0))
     throw InputError(file, 0, "cannot be read as a VTK XML unstructured grid (.vtu) with points");
   return grid;
 }
@@ -44,6 +44,50 @@ vtkDataArray* required_array(vtkUnstructuredGrid* grid, bool point_data, const c
                      std::string("array '") + name + "' must have " + std::to_string(components) +
                          " components, has " + std::to_string(a->GetNumberOfComponents()));
   return a;
+}
+
+// liquid_points.vtu: the water points with their water volume, mass and pressure.
+template <int dim>
+void read_liquid_points(const CaseDescription& description, LiquidPoints<dim>& liquid) {
+  const std::string& file = description.liquid_points_file;
+  auto cloud = read_vtu(file);
+  const vtkIdType n = cloud->GetNumberOfPoints();
+  liquid.resize(static_cast<std::size_t>(n));
+  vtkDataArray* material = required_array(cloud, true, "material", 1, file);
+  vtkDataArray* volume = required_array(cloud, true, "volume", 1, file);
+  vtkDataArray* mass = required_array(cloud, true, "mass", 1, file);
+  vtkDataArray* pressure = required_array(cloud, true, "pressure", 1, file);
+  vtkDataArray* velocity = cloud->GetPointData()->GetArray("velocity");
+  vtkDataArray* cell = cloud->GetPointData()->GetArray("cell");
+  for (vtkIdType q = 0; q < n; ++q) {
+    double x[3];
+    cloud->GetPoint(q, x);
+    for (int d = 0; d < dim; ++d) liquid.position[q](d) = x[d];
+    liquid.id[q] = static_cast<int>(q);
+    liquid.material[q] = static_cast<int>(material->GetTuple1(q));
+    if (liquid.material[q] < 0 ||
+        liquid.material[q] >= static_cast<int>(description.materials.size()) ||
+        !description.materials[liquid.material[q]].is_liquid())
+      throw InputError(file, 0,
+                       "liquid point " + std::to_string(q) + " has material " +
+                           std::to_string(liquid.material[q]) +
+                           ", not a water material of materials.toml");
+    liquid.volume[q] = volume->GetTuple1(q);
+    liquid.mass[q] = mass->GetTuple1(q);
+    if (!(liquid.volume[q] > 0) || !(liquid.mass[q] > 0))
+      throw InputError(file, 0,
+                       "liquid point " + std::to_string(q) + " has non-positive volume or mass");
+    liquid.pressure[q] = pressure->GetTuple1(q);
+    if (!(liquid.pressure[q] >= 0))
+      throw InputError(file, 0,
+                       "liquid point " + std::to_string(q) +
+                           " has a negative or invalid pressure (compression positive, >= 0)");
+    if (velocity && velocity->GetNumberOfComponents() == 3) {
+      const double* v = velocity->GetTuple(q);
+      for (int d = 0; d < dim; ++d) liquid.velocity[q](d) = v[d];
+    }
+    liquid.cell[q] = cell ? static_cast<int>(cell->GetTuple1(q)) : -1;
+  }
 }
 
 }  // namespace
@@ -109,9 +153,10 @@ LoadedCase<dim> load_case(const CaseDescription& description) {
     loaded.constraints.push_back(make_constraint<dim>(bc, facets_of_group[g], mesh, gfile));
   }
 
-  // Material points.
+  // Material points (a water-only case has none).
   const std::string& pfile = description.points_file;
-  auto cloud = read_vtu(pfile);
+  const bool has_liquid = !description.liquid_points_file.empty();
+  auto cloud = read_vtu(pfile, has_liquid);
   const vtkIdType n = cloud->GetNumberOfPoints();
   MaterialPoints<dim>& points = loaded.points;
   points.resize(static_cast<std::size_t>(n));
@@ -128,11 +173,12 @@ LoadedCase<dim> load_case(const CaseDescription& description) {
     points.id[p] = static_cast<int>(p);
     points.material[p] = static_cast<int>(material->GetTuple1(p));
     if (points.material[p] < 0 ||
-        points.material[p] >= static_cast<int>(description.materials.size()))
+        points.material[p] >= static_cast<int>(description.materials.size()) ||
+        description.materials[points.material[p]].is_liquid())
       throw InputError(pfile, 0,
                        "point " + std::to_string(p) + " has material " +
                            std::to_string(points.material[p]) +
-                           ", not a material of materials.toml");
+                           ", not a soil material of materials.toml");
     points.volume[p] = volume->GetTuple1(p);
     points.mass[p] = mass->GetTuple1(p);
     if (!(points.volume[p] > 0) || !(points.mass[p] > 0))
@@ -145,6 +191,7 @@ LoadedCase<dim> load_case(const CaseDescription& description) {
     }
     points.cell[p] = cell ? static_cast<int>(cell->GetTuple1(p)) : -1;
   }
+  if (has_liquid) read_liquid_points(description, loaded.liquid);
   return loaded;
 }
 

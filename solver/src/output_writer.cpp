@@ -37,6 +37,14 @@ void OutputWriter<dim>::write(Simulation<dim>& simulation, const Stage& stage, d
   if (!points_series)
     points_series = std::make_unique<PvdWriter>(folder_ / (stage.name + "_points.pvd"));
   points_series->add(time, points_name);
+  if (simulation.has_liquid()) {
+    const std::string liquid_name = stage.name + "_liquid_" + number + ".vtu";
+    write_liquid(simulation, folder_ / liquid_name);
+    auto& liquid_series = series_[stage.name + "_liquid"];
+    if (!liquid_series)
+      liquid_series = std::make_unique<PvdWriter>(folder_ / (stage.name + "_liquid.pvd"));
+    liquid_series->add(time, liquid_name);
+  }
   if (settings_.grid) {
     const std::string grid_name = stage.name + "_grid_" + number + ".vtu";
     write_grid(simulation, folder_ / grid_name);
@@ -68,6 +76,28 @@ void OutputWriter<dim>::write_points(const Simulation<dim>& simulation,
   if (wants(settings_, "material")) w.add_point_data("material", p.material);
   if (wants(settings_, "mass")) w.add_point_data("mass", 1, p.mass);
   if (wants(settings_, "volume")) w.add_point_data("volume", 1, p.volume);
+  if (wants(settings_, "porosity")) {
+    std::vector<double> n(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) n[i] = simulation.porosity(i);
+    w.add_point_data("porosity", 1, n);
+  }
+  w.write(file);
+}
+
+template <int dim>
+void OutputWriter<dim>::write_liquid(const Simulation<dim>& simulation,
+                                     const std::filesystem::path& file) const {
+  const LiquidPoints<dim>& q = simulation.liquid();
+  VtuWriter w;
+  w.set_points(as_xyz<dim>(q.position));
+  w.set_vertex_cells();
+  w.add_point_data("id", q.id);
+  w.add_point_data("velocity", 3, as_xyz<dim>(q.velocity));
+  w.add_point_data("pressure", 1, q.pressure);
+  w.add_point_data("porosity", 1, q.porosity);
+  w.add_point_data("mass", 1, q.mass);
+  w.add_point_data("volume", 1, q.volume);
+  w.add_point_data("material", q.material);
   w.write(file);
 }
 
@@ -90,6 +120,12 @@ void OutputWriter<dim>::write_grid(Simulation<dim>& simulation,
                                                                            : VtkCellType::kTetra)));
   w.add_point_data("mass", 1, simulation.node_mass());
   w.add_point_data("velocity", 3, as_xyz<dim>(simulation.node_velocity()));
+  if (simulation.has_liquid()) {
+    w.add_point_data("liquid_mass", 1, simulation.node_liquid_mass());
+    w.add_point_data("liquid_velocity", 3, as_xyz<dim>(simulation.node_liquid_velocity()));
+    w.add_point_data("porosity", 1, simulation.node_porosity());
+    w.add_point_data("liquid_pressure", 1, simulation.node_pressure());
+  }
   w.write(file);
 }
 

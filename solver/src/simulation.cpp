@@ -14,63 +14,13 @@
 
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/process_memory.hpp"
+#include "simulation_kernels.hpp"
 
 namespace lituya::solver {
 
 namespace {
 
-// sigma . g for the in-plane (2D) or full (3D) stress tensor in Voigt storage.
-inline Eigen::Vector2d stress_dot(const Voigt6& s, const Eigen::Vector2d& g) {
-  return {s(0) * g(0) + s(3) * g(1), s(3) * g(0) + s(1) * g(1)};
-}
-inline Eigen::Vector3d stress_dot(const Voigt6& s, const Eigen::Vector3d& g) {
-  return {s(0) * g(0) + s(3) * g(1) + s(5) * g(2), s(3) * g(0) + s(1) * g(1) + s(4) * g(2),
-          s(5) * g(0) + s(4) * g(1) + s(2) * g(2)};
-}
-
-// Strain increment (engineering shear) from the velocity gradient L = dv/dx times dt.
-inline Voigt6 strain_increment(const Eigen::Matrix2d& l, double dt) {
-  Voigt6 e;
-  e << l(0, 0) * dt, l(1, 1) * dt, 0.0, (l(0, 1) + l(1, 0)) * dt, 0.0, 0.0;
-  return e;
-}
-inline Voigt6 strain_increment(const Eigen::Matrix3d& l, double dt) {
-  Voigt6 e;
-  e << l(0, 0) * dt, l(1, 1) * dt, l(2, 2) * dt, (l(0, 1) + l(1, 0)) * dt, (l(1, 2) + l(2, 1)) * dt,
-      (l(0, 2) + l(2, 0)) * dt;
-  return e;
-}
-
-// Jaumann rotation of the stress: sigma += Omega sigma - sigma Omega, Omega = dt skew(L), so
-// that a rigid rotation carries the stress with it (objective stress rate).
-inline void rotate_stress(Voigt6& s, const Eigen::Matrix2d& l, double dt) {
-  const double w = 0.5 * (l(0, 1) - l(1, 0)) * dt;
-  const double sxx = s(0), syy = s(1), sxy = s(3);
-  s(0) = sxx + 2 * w * sxy;
-  s(1) = syy - 2 * w * sxy;
-  s(3) = sxy + w * (syy - sxx);
-}
-inline void rotate_stress(Voigt6& s, const Eigen::Matrix3d& l, double dt) {
-  const Eigen::Matrix3d omega = 0.5 * (l - l.transpose()) * dt;
-  Eigen::Matrix3d sigma;
-  sigma << s(0), s(3), s(5), s(3), s(1), s(4), s(5), s(4), s(2);
-  const Eigen::Matrix3d rate = omega * sigma - sigma * omega;
-  s(0) += rate(0, 0);
-  s(1) += rate(1, 1);
-  s(2) += rate(2, 2);
-  s(3) += rate(0, 1);
-  s(4) += rate(1, 2);
-  s(5) += rate(0, 2);
-}
-
-// Nodes that hold almost no mass (a point at the far corner of a cell) would get
-// meaningless velocities; their velocity is taken as zero.
-constexpr double kMassFloor = 1e-14;
-
-template <class Vec>
-Vec velocity_from_momentum(const Vec& momentum, double mass) {
-  return mass > kMassFloor ? Vec(momentum / mass) : Vec::Zero();
-}
+using namespace detail;
 
 double wall_seconds() {
   using clock = std::chrono::steady_clock;
@@ -78,23 +28,17 @@ double wall_seconds() {
   return std::chrono::duration<double>(clock::now() - start).count();
 }
 
-std::string format_vector(const double* v, int n) {
-  std::ostringstream s;
-  s << "(";
-  for (int i = 0; i < n; ++i) s << (i ? ", " : "") << v[i];
-  s << ")";
-  return s.str();
-}
-
 }  // namespace
 
 template <int dim>
 Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, MaterialPoints<dim> points,
-                            std::vector<NodalConstraint<dim>> constraints)
+                            std::vector<NodalConstraint<dim>> constraints, LiquidPoints<dim> liquid)
     : description_(std::move(description)),
       mesh_(std::move(mesh)),
       points_(std::move(points)),
-      constraints_(std::move(constraints)) {
+      constraints_(std::move(constraints)),
+      has_liquid_(!liquid.empty()),
+      liquid_(std::move(liquid)) {
   for (int d = 0; d < dim; ++d) gravity_(d) = description_.gravity.at(d);
   flip_fraction_ = description_.solver.flip_fraction;
   musl_ = description_.solver.scheme == TransferScheme::kMUSL;
@@ -103,6 +47,18 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
   for (const Material& m : description_.materials) {
     MaterialModelData data;
     data.model = m.model;
+    if (m.is_liquid()) {
+      data.liquid_density = m.liquid_density;
+      data.bulk_modulus = m.bulk_modulus;
+      data.viscosity = m.viscosity;
+      data.wave_speed = std::sqrt(m.bulk_modulus / m.liquid_density);
+      if (pore_liquid_ < 0) pore_liquid_ = static_cast<int>(materials_.size());
+      materials_.push_back(std::move(data));
+      continue;
+    }
+    data.solid_density = m.solid_density;
+    data.max_porosity = m.max_porosity;
+    data.grain_diameter = m.grain_diameter;
     data.elastic = ElasticConstants::from_young_poisson(m.youngs_modulus, m.poisson_ratio);
     if (m.model == MaterialModel::kMohrCoulomb)
       data.mohr_coulomb =
@@ -138,7 +94,14 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
                            " lies outside the background mesh");
     points_.cell[p] = cell;
   }
+  if (has_liquid_) setup_liquid();
   next_time_step_ = stable_time_step(1.0);
+}
+
+template <int dim>
+double Simulation<dim>::porosity(std::size_t p) const {
+  const double rho_s = materials_[points_.material[p]].solid_density;
+  return 1.0 - points_.mass[p] / (rho_s * points_.volume[p]);
 }
 
 template <int dim>
@@ -149,6 +112,10 @@ void Simulation<dim>::set_threads(int threads) {
     b.mass.assign(mesh_.node_count(), 0.0);
     b.momentum.assign(mesh_.node_count(), Vec::Zero());
     b.force.assign(mesh_.node_count(), Vec::Zero());
+  }
+  if (has_liquid_) {
+    liquid_thread_buffers_.resize(threads_ - 1);
+    for (LiquidBuffer& b : liquid_thread_buffers_) b.assign(mesh_.node_count());
   }
 }
 
@@ -168,6 +135,16 @@ double Simulation<dim>::stable_time_step(double courant) const {
   for (std::size_t p = 0; p < n; ++p) {
     const double speed = materials_[points_.material[p]].wave_speed + points_.velocity[p].norm();
     dt = std::min(dt, mesh_.cell_min_height[points_.cell[p]] / speed);
+  }
+  const std::size_t n_liquid = liquid_.size();
+#pragma omp parallel for num_threads(threads_) reduction(min : dt) schedule(static)
+  for (std::size_t q = 0; q < n_liquid; ++q) {
+    const MaterialModelData& water = materials_[liquid_.material[q]];
+    const double h = mesh_.cell_min_height[liquid_.cell[q]];
+    // Sound speed plus the viscous (diffusive) limit 2 mu / (rho h).
+    const double speed = water.wave_speed + liquid_.velocity[q].norm() +
+                         2.0 * water.viscosity / (water.liquid_density * h);
+    dt = std::min(dt, h / speed);
   }
   return courant * dt;
 }
@@ -227,6 +204,10 @@ void Simulation<dim>::points_to_nodes(Transfer what) {
 
 template <int dim>
 void Simulation<dim>::nodal_update(double dt, double damping) {
+  if (has_liquid_) {
+    two_phase_nodal_update(dt, damping);
+    return;
+  }
   const std::size_t n_nodes = mesh_.node_count();
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i) {
@@ -285,6 +266,7 @@ void Simulation<dim>::remap_momentum() {
     node_velocity_[i] = velocity_from_momentum(grid_.momentum[i], grid_.mass[i]);
   }
   apply_constraints<dim>(active_constraints_, node_velocity_);
+  if (has_liquid_) remap_liquid_momentum();
 }
 
 template <int dim>
@@ -357,7 +339,9 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
     Voigt6& sigma = points_.stress[p];
     rotate_stress(sigma, l, dt);
     const MaterialModelData& material = materials_[points_.material[p]];
-    if (material.model == MaterialModel::kMohrCoulomb)
+    if (material.max_porosity < 1.0 && porosity(p) >= material.max_porosity)
+      sigma.setZero();  // n > n_max: grains separated, no effective stress (section 2.3)
+    else if (material.model == MaterialModel::kMohrCoulomb)
       points_.plastic_strain[p] += material.mohr_coulomb->update(sigma, strain);
     else
       elastic_update(material.elastic, sigma, strain);
@@ -412,11 +396,14 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
 template <int dim>
 void Simulation<dim>::step(double dt, double damping) {
   points_to_nodes(Transfer::kMassMomentumForce);
+  if (has_liquid_) liquid_to_nodes(Transfer::kMassMomentumForce);
   nodal_update(dt, damping);
   nodes_to_points(dt);
+  if (has_liquid_) liquid_nodes_to_points(dt);
   if (musl_) remap_momentum();
   if (volumetric_smoothing_) smooth_volumetric_strain(dt);
   update_stress_and_relocate(dt);
+  if (has_liquid_) update_liquid_and_relocate(dt);
   ++step_count_;
 }
 
@@ -425,6 +412,12 @@ void Simulation<dim>::map_to_grid() {
   points_to_nodes(Transfer::kMassMomentumForce);
   for (std::size_t i = 0; i < mesh_.node_count(); ++i)
     node_velocity_[i] = velocity_from_momentum(grid_.momentum[i], grid_.mass[i]);
+  if (has_liquid_) {
+    liquid_to_nodes(Transfer::kMassMomentumForce);
+    for (std::size_t i = 0; i < mesh_.node_count(); ++i)
+      node_liquid_velocity_[i] =
+          velocity_from_momentum(liquid_grid_.momentum[i], liquid_grid_.mass[i]);
+  }
 }
 
 template <int dim>
@@ -434,6 +427,10 @@ double Simulation<dim>::kinetic_energy() const {
 #pragma omp parallel for num_threads(threads_) reduction(+ : e) schedule(static)
   for (std::size_t p = 0; p < n; ++p)
     e += 0.5 * points_.mass[p] * points_.velocity[p].squaredNorm();
+  const std::size_t n_liquid = liquid_.size();
+#pragma omp parallel for num_threads(threads_) reduction(+ : e) schedule(static)
+  for (std::size_t q = 0; q < n_liquid; ++q)
+    e += 0.5 * liquid_.mass[q] * liquid_.velocity[q].squaredNorm();
   return e;
 }
 
@@ -443,7 +440,14 @@ std::size_t Simulation<dim>::storage_bytes() const {
   const std::size_t cells = mesh_.cell_count() * (2 * sizeof(typename Mesh<dim>::CellNodes) +
                                                   sizeof(Eigen::Matrix<double, dim, dim>) +
                                                   (dim + 1) * sizeof(Vec) + 2 * sizeof(double));
-  return points_.bytes() + shape_.size() * sizeof(Shape) + nodes + cells +
+  std::size_t liquid = 0;
+  if (has_liquid_)
+    liquid = liquid_.bytes() + liquid_shape_.size() * sizeof(Shape) +
+             liquid_flux_divergence_.size() * sizeof(double) +
+             (1 + liquid_thread_buffers_.size()) * mesh_.node_count() *
+                 (5 * sizeof(double) + 3 * sizeof(Vec)) +
+             mesh_.node_count() * (5 * sizeof(double) + 2 * sizeof(Vec));
+  return points_.bytes() + shape_.size() * sizeof(Shape) + nodes + cells + liquid +
          thread_buffers_.size() * mesh_.node_count() * (sizeof(double) + 2 * sizeof(Vec));
 }
 
@@ -454,7 +458,7 @@ void Simulation<dim>::report_progress(const Stage& stage, double t, double wall,
   if (!final_line && now - last_progress_wall_ < 2.0) return;
   last_progress_wall_ = now;
   static const bool terminal = isatty(fileno(stderr));
-  const double rate = wall > 0 ? static_cast<double>(points_.size()) * stage_steps_ / wall : 0;
+  const double rate = wall > 0 ? static_cast<double>(point_count()) * stage_steps_ / wall : 0;
   const double eta = t > 0 ? wall * (stage.duration - t) / t : 0;
   char line[256];
   std::snprintf(line, sizeof line,
@@ -515,13 +519,14 @@ StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback&
   report.simulated_time = t;
   report.wall_time = wall_seconds() - start_wall;
   report.point_steps_per_second =
-      report.wall_time > 0 ? static_cast<double>(points_.size()) * stage_steps_ / report.wall_time
+      report.wall_time > 0 ? static_cast<double>(point_count()) * stage_steps_ / report.wall_time
                            : 0;
   report.peak_memory = peak_memory_bytes();
   report_progress(stage, t, report.wall_time, true);
   if (quasi_static) {
     // The quasi-static stage ends in equilibrium: the next stage starts at rest.
     for (auto& v : points_.velocity) v.setZero();
+    for (auto& v : liquid_.velocity) v.setZero();
     if (stage.reset_displacement)
       for (auto& u : points_.displacement) u.setZero();
   }

@@ -50,9 +50,10 @@ template <int dim>
 std::vector<StageReport> run(const CaseDescription& description, const SolveOptions& options,
                              const std::filesystem::path& output_folder, std::ostream& log) {
   LoadedCase<dim> loaded = load_case<dim>(description);
-  const std::size_t n_points = loaded.points.size();
+  const std::size_t n_points = loaded.points.size() + loaded.liquid.size();
+  const std::size_t n_liquid = loaded.liquid.size();
   Simulation<dim> simulation(description, std::move(loaded.mesh), std::move(loaded.points),
-                             std::move(loaded.constraints));
+                             std::move(loaded.constraints), std::move(loaded.liquid));
   simulation.set_threads(options.threads);
   simulation.set_progress_stream(options.progress);
   OutputWriter<dim> writer(output_folder, description.output);
@@ -64,9 +65,9 @@ std::vector<StageReport> run(const CaseDescription& description, const SolveOpti
     log << line << "\n" << std::flush;
     if (options.progress) *options.progress << line << "\n" << std::flush;
   };
-  note("Lituya solve: " + std::to_string(dim) + "D, " + std::to_string(n_points) + " points, " +
-       std::to_string(simulation.mesh().cell_count()) + " cells, " +
-       std::to_string(options.threads) + " thread(s)");
+  note("Lituya solve: " + std::to_string(dim) + "D, " + std::to_string(n_points) + " points (" +
+       std::to_string(n_liquid) + " liquid), " + std::to_string(simulation.mesh().cell_count()) +
+       " cells, " + std::to_string(options.threads) + " thread(s)");
   try {
     for (const Stage& stage : description.stages) {
       reports.push_back(simulation.run_stage(stage, on_output));

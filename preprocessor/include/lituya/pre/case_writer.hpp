@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "lituya/pre/liquid_points.hpp"
 #include "lituya/pre/material_points.hpp"
 #include "lituya/pre/mesh.hpp"
 #include "lituya/pre/scene.hpp"
@@ -13,6 +14,7 @@ namespace lituya::pre {
 // File names inside the case folder.
 inline constexpr const char* kGeometryFile = "geometry.vtu";
 inline constexpr const char* kPointsFile = "points.vtu";
+inline constexpr const char* kLiquidPointsFile = "liquid_points.vtu";
 inline constexpr const char* kMaterialsFile = "materials.toml";
 inline constexpr const char* kStagesFile = "stages.toml";
 inline constexpr const char* kPostFile = "post.toml";
@@ -24,12 +26,16 @@ std::vector<std::int32_t> region_group_of_cells(const Scene& scene, const Mesh& 
 // geometry.vtu: nodes, background cells, then the facets of every group of dimension - 1.
 void write_geometry(const Mesh& mesh, const std::vector<std::int32_t>& cell_group,
                     const std::filesystem::path& file);
-// points.vtu: one vertex cell per material point.
+// points.vtu: one vertex cell per solid point (none in a water-only scene).
 void write_points(const MaterialPoints& points, const std::filesystem::path& file);
+// liquid_points.vtu: one vertex cell per liquid point.
+void write_liquid_points(const LiquidPoints& points, const std::filesystem::path& file);
 // materials.toml
 void write_materials(const Scene& scene, const std::filesystem::path& file);
-// stages.toml
-void write_stages(const Scene& scene, const Mesh& mesh, const std::filesystem::path& file);
+// stages.toml; names liquid_points.vtu when `has_liquid_points` (a dry case has no such key,
+// and the solver allocates no liquid phase).
+void write_stages(const Scene& scene, const Mesh& mesh, bool has_liquid_points,
+                  const std::filesystem::path& file);
 // post.toml, and the reference data next to it.
 void write_post(const PostSettings& post, const std::filesystem::path& case_folder);
 

@@ -1,5 +1,6 @@
 #pragma once
-// The initial material points, in the structure-of-arrays layout of points.vtu.
+// The initial solid points (the soil skeleton), in the structure-of-arrays layout of
+// points.vtu. Water has its own point set, LiquidPoints (liquid_points.hpp).
 #include <cstddef>
 #include <cstdint>
 #include <vector>

@@ -7,11 +7,14 @@ namespace lituya::pre {
 
 struct PreprocessSummary {
   int dimension = 0;
-  std::size_t nodes = 0, cells = 0, points = 0;
+  std::size_t nodes = 0, cells = 0;
+  std::size_t points = 0;         // solid points (points.vtu)
+  std::size_t liquid_points = 0;  // liquid points (liquid_points.vtu; 0: a dry case)
 };
 
 // Reads the scene, meshes its geometry with gmsh, seeds points, writes the case folder
-// (geometry.vtu, points.vtu, materials.toml, stages.toml, post.toml if the scene has [post]).
+// (geometry.vtu, points.vtu, liquid_points.vtu if the scene has water, materials.toml,
+// stages.toml, post.toml if the scene has [post]).
 // Throws lituya::InputError (file + line + what was expected) for any bad input; never writes
 // into a non-empty case folder unless overwrite is true (use prepare_output_folder), and
 // validates everything BEFORE creating the folder.

@@ -16,12 +16,23 @@
 
 namespace lituya::pre {
 
-enum class InitialStress { kZero, kK0 };
+// How a region's points start:
+//   kZero        stress-free solid points / liquid points at zero pressure (the quasi-static
+//                stage settles them);
+//   kK0          soil: geostatic effective stress (K0), and a hydrostatic pore pressure when
+//                the region is saturated;
+//   kHydrostatic free water: the pressure of the water column above each point.
+enum class InitialStress { kZero, kK0, kHydrostatic };
 
-// A physical group of dimension `dimension` filled with material points.
+// A physical group of dimension `dimension` filled with material points. Its `material` is
+// either a soil (solid points, optionally saturated by `pore_water`) or water (free water:
+// liquid points only, porosity 1).
 struct Region {
   std::string group;
   std::size_t material = 0;  // index in Scene::materials
+  // Saturated soil: index in Scene::materials of the water that fills the pores (liquid points
+  // at the solid points' positions). Empty for dry soil and for free water.
+  std::optional<std::size_t> pore_water;
   InitialStress initial_stress = InitialStress::kZero;
   double k0 = 0;       // lateral earth pressure coefficient at rest (k0 regions only)
   int group_line = 0;  // scene.toml line of `group`, for messages
@@ -51,6 +62,14 @@ struct Scene {
   solver::SolverSettings solver;
   solver::OutputSettings output;
   std::optional<PostSettings> post;
+
+  // True when the region's material is water (free water, liquid points only).
+  bool is_free_water(const Region& r) const { return materials[r.material].is_liquid(); }
+  // The water material of a region's liquid points: its own material for free water, its
+  // pore water for saturated soil; nullptr for dry soil.
+  const solver::Material* water_of(const Region& r) const;
+  // True when any region is seeded with liquid points (the case then has liquid_points.vtu).
+  bool has_water() const;
 };
 
 // Reads and validates scene.toml; throws InputError naming scene.toml and the line.

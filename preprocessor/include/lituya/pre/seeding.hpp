@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "lituya/pre/liquid_points.hpp"
 #include "lituya/pre/material_points.hpp"
 #include "lituya/pre/mesh.hpp"
 
@@ -25,9 +26,17 @@ std::string supported_points_per_cell(int dimension);
 // Throws std::invalid_argument for an unsupported count.
 std::vector<std::array<double, 4>> seed_pattern(int dimension, int points_per_cell);
 
-// Appends `points_per_cell` points to each of `cells`, with volume = cell volume / N and
+// Appends `points_per_cell` solid points to each of `cells`, with volume = cell volume / N and
 // mass = dry_density * volume.
 void seed_cells(const Mesh& mesh, const std::vector<std::size_t>& cells, int points_per_cell,
                 double dry_density, std::int32_t material_id, MaterialPoints& points);
+
+// Appends `points_per_cell` liquid points to each of `cells`, at the positions seed_cells
+// uses, so the water of saturated soil sits on its solid points. A point stands for the water
+// in the mixture volume V = cell volume / N: volume = porosity * V and mass = liquid_density *
+// porosity * V (the apparent density n rho_w of eq. (2)). Free water has porosity 1.
+void seed_liquid_cells(const Mesh& mesh, const std::vector<std::size_t>& cells, int points_per_cell,
+                       double porosity, double liquid_density, std::int32_t material_id,
+                       LiquidPoints& points);
 
 }  // namespace lituya::pre

@@ -27,6 +27,15 @@ struct BoxScene {
   // Vertical (y) geostatic stress sigma_yy = -rho g (y_top - y), sigma_xx = sigma_zz = k0
   // sigma_yy when k0 >= 0 (g = |gravity|, y_top = block_max.y); zero stress when k0 < 0.
   double k0 = -1;
+  // Water (optional, model kWater): liquid points in the cells whose centroid lies in
+  // [water_min, water_max] (free water outside the solid block, pore water inside it, mass
+  // n rho_w V there), with hydrostatic pressure rho_w g (water_max.y - y). With water, the
+  // k0 stress above is the buoyant (effective) one, (rho_dry - (1 - n) rho_w) g depth.
+  bool with_water = false;
+  Material water;
+  Vec water_min = Vec::Zero();
+  Vec water_max = Vec::Zero();
+  Vec water_velocity = Vec::Zero();  // initial velocity of every liquid point
 };
 
 template <int dim>

@@ -82,7 +82,7 @@ struct SolverSettings {
 
 struct OutputSettings {
   std::vector<std::string> point_fields = {"displacement", "velocity", "stress", "plastic_strain",
-                                           "material",     "mass",     "volume"};
+                                           "material",     "mass",     "volume", "porosity"};
   bool grid = true;
 };
 

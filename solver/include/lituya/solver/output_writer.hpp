@@ -16,12 +16,14 @@ template <int dim>
 class OutputWriter {
  public:
   OutputWriter(std::filesystem::path folder, OutputSettings settings);
-  // Writes <stage>_points_NNNN.vtu (and _grid_ if enabled) and updates the .pvd files.
+  // Writes <stage>_points_NNNN.vtu (and _liquid_ with water, _grid_ if enabled) and updates
+  // the .pvd files.
   void write(Simulation<dim>& simulation, const Stage& stage, double time, int index);
   const std::filesystem::path& folder() const { return folder_; }
 
  private:
   void write_points(const Simulation<dim>& simulation, const std::filesystem::path& file) const;
+  void write_liquid(const Simulation<dim>& simulation, const std::filesystem::path& file) const;
   void write_grid(Simulation<dim>& simulation, const std::filesystem::path& file) const;
 
   std::filesystem::path folder_;

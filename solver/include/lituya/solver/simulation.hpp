@@ -3,6 +3,12 @@
 // of the reference paper with n and the water terms absent: momentum balance on the nodes of
 // the background mesh, stress update at the material points.
 //
+// With liquid points (two-layer two-phase MPM, section 2) each step also carries the water:
+// nodes hold liquid mass, momentum and force beside the solid's, the porosity field comes from
+// the solid points, the pore-pressure gradient is shared between the phases by porosity
+// (eqs. 15, 16), the drag (23) couples the nodal velocities implicitly, and the liquid
+// pressure follows eq. (8). A dry case allocates none of this (two_phase.cpp).
+//
 // One step (MUSL, Sulsky et al. 1994; USL skips step 4):
 //   1. points -> nodes: mass, momentum, internal force -V sigma . grad N, gravity m g;
 //   2. nodes: local damping, velocity update, boundary conditions;
@@ -20,6 +26,7 @@
 
 #include "lituya/solver/boundary_conditions.hpp"
 #include "lituya/solver/case_description.hpp"
+#include "lituya/solver/liquid_points.hpp"
 #include "lituya/solver/material_points.hpp"
 #include "lituya/solver/mesh.hpp"
 #include "lituya/solver/mohr_coulomb.hpp"
@@ -47,8 +54,9 @@ class Simulation {
 
   // `constraints[i]` belongs to `description.boundaries[i]`. Points must lie in the mesh
   // (their `cell` is a valid starting cell or -1).
+  // `liquid` may be empty (a dry case): then no liquid-phase storage is allocated.
   Simulation(CaseDescription description, Mesh<dim> mesh, MaterialPoints<dim> points,
-             std::vector<NodalConstraint<dim>> constraints);
+             std::vector<NodalConstraint<dim>> constraints, LiquidPoints<dim> liquid = {});
 
   void set_threads(int threads);
   int threads() const { return threads_; }
@@ -75,6 +83,17 @@ class Simulation {
   const CaseDescription& description() const { return description_; }
   const std::vector<double>& node_mass() const { return grid_.mass; }
   const std::vector<Vec>& node_velocity() const { return node_velocity_; }
+  bool has_liquid() const { return has_liquid_; }
+  const LiquidPoints<dim>& liquid() const { return liquid_; }
+  LiquidPoints<dim>& liquid() { return liquid_; }
+  const std::vector<double>& node_liquid_mass() const { return liquid_grid_.mass; }
+  const std::vector<Vec>& node_liquid_velocity() const { return node_liquid_velocity_; }
+  const std::vector<double>& node_porosity() const { return node_porosity_; }
+  const std::vector<double>& node_pressure() const { return node_pressure_; }
+  // Porosity of solid point p: 1 - m / (rho_s V), the Lagrangian form of eq. (5).
+  double porosity(std::size_t p) const;
+  // Total number of points (solid + liquid), for throughput figures.
+  std::size_t point_count() const { return points_.size() + liquid_.size(); }
   // Bytes held by points, nodes and mesh (for the memory-per-point report).
   std::size_t storage_bytes() const;
 
@@ -85,11 +104,24 @@ class Simulation {
     std::vector<Vec> force;
   };
   enum class Transfer { kMassMomentumForce, kMomentum };
+  // Nodal sums of the liquid phase and of the coupling terms (two-phase cases only).
+  struct LiquidBuffer {
+    std::vector<double> mass;
+    std::vector<Vec> momentum;
+    std::vector<Vec> force;           // gravity and viscous force on the liquid
+    std::vector<Vec> pressure_force;  // integral of p grad N over the mixture, split by n
+    std::vector<double> water_volume, water_volume_pressure;  // sum N V_w, sum N V_w p
+    std::vector<double> solid_volume;                         // sum N V (1 - n) of the solid points
+    std::vector<double> drag;  // sum N V C, C the drag coefficient of eq. (23)
+    void assign(std::size_t n_nodes);
+  };
   struct MaterialModelData {
     MaterialModel model;
     ElasticConstants elastic;
     std::unique_ptr<MohrCoulomb> mohr_coulomb;
-    double wave_speed;  // sqrt((lambda + 2G) / rho_dry)
+    double wave_speed;  // sqrt((lambda + 2G) / rho_dry); water: sqrt(K_w / rho_w)
+    double solid_density = 0, max_porosity = 1, grain_diameter = 0;
+    double liquid_density = 0, bulk_modulus = 0, viscosity = 0;  // water only
   };
 
   void points_to_nodes(Transfer what);
@@ -98,6 +130,13 @@ class Simulation {
   void remap_momentum();
   void smooth_volumetric_strain(double dt);
   void update_stress_and_relocate(double dt);
+  // Two-phase parts (two_phase.cpp).
+  void setup_liquid();
+  void liquid_to_nodes(Transfer what);
+  void two_phase_nodal_update(double dt, double damping);
+  void liquid_nodes_to_points(double dt);
+  void remap_liquid_momentum();
+  void update_liquid_and_relocate(double dt);
   void report_progress(const Stage& stage, double t, double wall, bool final_line);
 
   CaseDescription description_;
@@ -120,6 +159,18 @@ class Simulation {
   double flip_fraction_;
   bool musl_;
   double max_velocity_;
+  // Liquid phase (empty in a dry case).
+  bool has_liquid_ = false;
+  LiquidPoints<dim> liquid_;
+  std::vector<Shape> liquid_shape_;
+  LiquidBuffer liquid_grid_;
+  std::vector<LiquidBuffer> liquid_thread_buffers_;
+  std::vector<Vec> node_liquid_velocity_, node_liquid_acceleration_;
+  std::vector<double> node_porosity_;
+  std::vector<double> node_pressure_;           // volume-weighted nodal liquid pressure
+  std::vector<double> node_mesh_volume_;        // integral of N_i over the mesh (lumped volume)
+  std::vector<double> liquid_flux_divergence_;  // per liquid point, div((1-n) v_s + n v_w)
+  int pore_liquid_ = -1;  // the water material that fills the pores (drag, eq. 23)
   long step_count_ = 0;
   double next_time_step_ = 0;  // stable dt from the last stress update (for courant 1)
   std::ostream* progress_ = nullptr;

@@ -1,0 +1,74 @@
+#pragma once
+// Small kernels shared by the solid-phase and the liquid-phase parts of the time loop
+// (simulation.cpp and two_phase.cpp). Internal to the solver library.
+#include <sstream>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "lituya/solver/mohr_coulomb.hpp"
+
+namespace lituya::solver::detail {
+
+// sigma . g for the in-plane (2D) or full (3D) stress tensor in Voigt storage.
+inline Eigen::Vector2d stress_dot(const Voigt6& s, const Eigen::Vector2d& g) {
+  return {s(0) * g(0) + s(3) * g(1), s(3) * g(0) + s(1) * g(1)};
+}
+inline Eigen::Vector3d stress_dot(const Voigt6& s, const Eigen::Vector3d& g) {
+  return {s(0) * g(0) + s(3) * g(1) + s(5) * g(2), s(3) * g(0) + s(1) * g(1) + s(4) * g(2),
+          s(5) * g(0) + s(4) * g(1) + s(2) * g(2)};
+}
+
+// Strain increment (engineering shear) from the velocity gradient L = dv/dx times dt.
+inline Voigt6 strain_increment(const Eigen::Matrix2d& l, double dt) {
+  Voigt6 e;
+  e << l(0, 0) * dt, l(1, 1) * dt, 0.0, (l(0, 1) + l(1, 0)) * dt, 0.0, 0.0;
+  return e;
+}
+inline Voigt6 strain_increment(const Eigen::Matrix3d& l, double dt) {
+  Voigt6 e;
+  e << l(0, 0) * dt, l(1, 1) * dt, l(2, 2) * dt, (l(0, 1) + l(1, 0)) * dt, (l(1, 2) + l(2, 1)) * dt,
+      (l(0, 2) + l(2, 0)) * dt;
+  return e;
+}
+
+// Jaumann rotation of the stress: sigma += Omega sigma - sigma Omega, Omega = dt skew(L), so
+// that a rigid rotation carries the stress with it (objective stress rate).
+inline void rotate_stress(Voigt6& s, const Eigen::Matrix2d& l, double dt) {
+  const double w = 0.5 * (l(0, 1) - l(1, 0)) * dt;
+  const double sxx = s(0), syy = s(1), sxy = s(3);
+  s(0) = sxx + 2 * w * sxy;
+  s(1) = syy - 2 * w * sxy;
+  s(3) = sxy + w * (syy - sxx);
+}
+inline void rotate_stress(Voigt6& s, const Eigen::Matrix3d& l, double dt) {
+  const Eigen::Matrix3d omega = 0.5 * (l - l.transpose()) * dt;
+  Eigen::Matrix3d sigma;
+  sigma << s(0), s(3), s(5), s(3), s(1), s(4), s(5), s(4), s(2);
+  const Eigen::Matrix3d rate = omega * sigma - sigma * omega;
+  s(0) += rate(0, 0);
+  s(1) += rate(1, 1);
+  s(2) += rate(2, 2);
+  s(3) += rate(0, 1);
+  s(4) += rate(1, 2);
+  s(5) += rate(0, 2);
+}
+
+// Nodes that hold almost no mass (a point at the far corner of a cell) would get
+// meaningless velocities; their velocity is taken as zero.
+inline constexpr double kMassFloor = 1e-14;
+
+template <class Vec>
+inline Vec velocity_from_momentum(const Vec& momentum, double mass) {
+  return mass > kMassFloor ? Vec(momentum / mass) : Vec::Zero();
+}
+
+inline std::string format_vector(const double* v, int n) {
+  std::ostringstream s;
+  s << "(";
+  for (int i = 0; i < n; ++i) s << (i ? ", " : "") << v[i];
+  s << ")";
+  return s.str();
+}
+
+}  // namespace lituya::solver::detail
