@@ -122,7 +122,8 @@ bool plot_xy(const fs::path& png, const std::string& title, const std::string& x
       }
       gp << "  " << gnuplot_quoted(path_from(folder, s.csv)) << " skip 1 using " << s.x_column
          << ":" << y.str() << (s.points ? " with points pt 7 ps 1.2" : " with lines lw 2")
-         << " title " << gnuplot_quoted(s.label) << (i + 1 < series.size() ? ", \\\n" : "\n");
+         << (s.line_type > 0 ? " lt " + std::to_string(s.line_type) : std::string()) << " title "
+         << gnuplot_quoted(s.label) << (i + 1 < series.size() ? ", \\\n" : "\n");
     }
   }
   {

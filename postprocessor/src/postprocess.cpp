@@ -1,7 +1,9 @@
-// `lituya post`: runs the measurements over the whole output series of one stage and writes
-// the tables and plots a user compares with the laboratory.
+// `lituya post`: runs the measurements over the whole output series of one stage (the slide
+// on the point series, the water on the liquid series) and writes the tables and plots a
+// user compares with the laboratory.
 #include "lituya/post/postprocess.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -39,6 +41,10 @@ class CsvFile {
   void row(const Values&... values) {
     bool first = true;
     ((out_ << (first ? "" : ",") << csv_number(values), first = false), ...);
+    out_ << "\n";
+  }
+  void row(const std::vector<double>& values) {
+    for (size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << csv_number(values[i]);
     out_ << "\n";
   }
   void close() {
@@ -93,33 +99,106 @@ void fill_missing_volumes(PointCloud& cloud, const fs::path& case_folder,
   }
 }
 
-}  // namespace
+// Everything written into the post folder is recorded, so a caller can list it.
+class PostFolder {
+ public:
+  PostFolder(fs::path folder, PostResult& result) : folder_(std::move(folder)), result_(result) {}
+  fs::path file(const std::string& name) {
+    result_.files.push_back(folder_ / name);
+    return folder_ / name;
+  }
+  // A PNG and its gnuplot script; false when the PNG could not be made.
+  bool plot(const std::string& png, const std::string& title, const std::string& xlabel,
+            const std::string& ylabel, const std::vector<PlotSeries>& series,
+            bool y_from_zero = false) {
+    result_.files.push_back((folder_ / png).replace_extension(".gp"));
+    const bool made = plot_xy(folder_ / png, title, xlabel, ylabel, series, y_from_zero);
+    if (made) result_.files.push_back(folder_ / png);
+    return made;
+  }
+  const fs::path& folder() const { return folder_; }
 
-PostResult postprocess(const fs::path& case_folder, const fs::path& post_folder, bool overwrite) {
-  // Everything the user wrote is checked before the post folder is touched, so a typo never
-  // leaves an empty or half-written post folder behind.
-  const PostSettings settings = read_post_settings(case_folder / "post.toml");
-  const std::vector<std::string> material_names =
-      read_material_names(case_folder / "materials.toml");
-  const std::vector<bool> tracked = tracked_material_mask(settings, material_names);
-  const int dimension = case_dimension(case_folder);
+ private:
+  fs::path folder_;
+  PostResult& result_;
+};
+
+// What the slide measures need, read and checked before the post folder is touched.
+struct SlideInput {
+  std::vector<std::string> material_names;
+  std::vector<bool> tracked;
+  SlopeFrame frame;
+  std::vector<SeriesEntry> series;
+  std::optional<ReferenceData> reference;
+};
+
+SlideInput read_slide_input(const PostSettings& settings, const fs::path& case_folder) {
+  std::vector<std::string> material_names = read_material_names(case_folder / "materials.toml");
+  std::vector<bool> tracked = tracked_material_mask(settings, material_names);
   const SlopeFrame frame(
       Eigen::Vector3d(settings.slope_origin[0], settings.slope_origin[1], settings.slope_origin[2]),
       settings.slope_angle_deg);
-
   const fs::path pvd = case_folder / "output" / (settings.stage + "_points.pvd");
   if (!fs::exists(pvd))
     throw InputError(settings.file, settings.stage_line,
                      "no output series for stage '" + settings.stage + "': " + pvd.string() +
                          " does not exist (run `lituya solve` first, or check the stage name)");
-  const std::vector<SeriesEntry> series = read_pvd(pvd);
+  std::vector<SeriesEntry> series = read_pvd(pvd);
   if (series.empty()) throw InputError(pvd.string(), 0, "the collection lists no outputs");
   std::optional<ReferenceData> reference;
   if (!settings.reference_file.empty()) reference = read_reference(settings.reference_file);
+  return {std::move(material_names), std::move(tracked), frame, std::move(series),
+          std::move(reference)};
+}
 
-  prepare_output_folder(post_folder, overwrite);
+// What the water measures need, read and checked before the post folder is touched.
+struct WaterInput {
+  std::vector<SeriesEntry> series;
+  std::optional<GaugeReference> reference;
+  double half_width = 0;  // of a gauge's column; the surface profile bins are twice as wide
+};
 
-  PostResult result;
+WaterInput read_water_input(const PostSettings& settings, const fs::path& case_folder,
+                            int dimension) {
+  WaterInput input;
+  const fs::path pvd = case_folder / "output" / (settings.liquid_stage + "_liquid.pvd");
+  if (!fs::exists(pvd))
+    throw InputError(
+        settings.file, settings.water_line,
+        std::string(settings.gauges.empty() ? "the leading wave needs" : "the wave gauges need") +
+            " the water surface, but there is no liquid output for stage '" +
+            settings.liquid_stage + "': " + pvd.string() +
+            " does not exist (a case without water writes none; otherwise run "
+            "`lituya solve` first, or check 'liquid_stage')");
+  input.series = read_pvd(pvd);
+  if (input.series.empty()) throw InputError(pvd.string(), 0, "the collection lists no outputs");
+  if (!settings.gauge_reference_file.empty())
+    input.reference = read_gauge_reference(settings.gauge_reference_file, settings.gauge_names);
+
+  if (settings.gauge_half_width) {
+    input.half_width = *settings.gauge_half_width;
+  } else {
+    // The spacing of the points as they were seeded (the first output that holds any), so
+    // that every output is measured over the same columns.
+    for (const SeriesEntry& entry : input.series) {
+      const double spacing = median_point_spacing(read_liquid_points(entry.file, dimension));
+      if (std::isfinite(spacing)) {
+        input.half_width = spacing;
+        break;
+      }
+    }
+    if (!(input.half_width > 0))
+      throw InputError(settings.file, settings.water_line,
+                       "cannot infer 'gauge_half_width': no liquid output of " + pvd.string() +
+                           " holds points with a volume (give gauge_half_width in m)");
+  }
+  return input;
+}
+
+bool measure_slide(const PostSettings& settings, const SlideInput& input,
+                   const fs::path& case_folder, int dimension, PostFolder& out,
+                   PostResult& result) {
+  const std::vector<SeriesEntry>& series = input.series;
   std::vector<size_t> profile_output;
   for (double t : settings.profile_times) {
     profile_output.push_back(closest_output(series, t));
@@ -130,27 +209,28 @@ PostResult postprocess(const fs::path& case_folder, const fs::path& post_folder,
   for (size_t k = 0; k < series.size(); ++k) {
     PointCloud cloud = read_points(series[k].file, dimension);
     fill_missing_volumes(cloud, case_folder, initial_volume);
-    if (cloud.material.empty() && material_names.size() > 1)
+    if (cloud.material.empty() && input.material_names.size() > 1)
       throw InputError(series[k].file.string(), 0,
                        "the points have no 'material' field, so the tracked materials cannot be "
                        "told apart (add \"material\" to [output] point_fields)");
     result.time.push_back(series[k].time);
     result.front_position.push_back(
-        front_position(cloud, tracked, frame, settings.bin_width, settings.min_points));
-    result.wall_height.push_back(wall_height(cloud, tracked, frame, settings.wall_position,
-                                             settings.bin_width, settings.min_points));
+        front_position(cloud, input.tracked, input.frame, settings.bin_width, settings.min_points));
+    result.wall_height.push_back(wall_height(cloud, input.tracked, input.frame,
+                                             settings.wall_position, settings.bin_width,
+                                             settings.min_points));
     for (size_t p = 0; p < profile_output.size(); ++p)
       if (profile_output[p] == k)
-        result.profiles[p].bins =
-            thickness_profile(cloud, tracked, frame, settings.bin_width, settings.min_points);
+        result.profiles[p].bins = thickness_profile(cloud, input.tracked, input.frame,
+                                                    settings.bin_width, settings.min_points);
   }
   const double start_front = settings.initial_front.value_or(result.front_position.front());
   for (double front : result.front_position) result.front_travel.push_back(front - start_front);
 
   // Tables.
-  const fs::path runout_csv = post_folder / "runout.csv";
-  const fs::path wall_csv = post_folder / "wall_height.csv";
-  const fs::path profiles_csv = post_folder / "profiles.csv";
+  const fs::path runout_csv = out.file("runout.csv");
+  const fs::path wall_csv = out.file("wall_height.csv");
+  const fs::path profiles_csv = out.file("profiles.csv");
   {
     CsvFile runout(runout_csv, "time,front_position,front_travel");
     CsvFile wall(wall_csv, "time,wall_height");
@@ -177,18 +257,19 @@ PostResult postprocess(const fs::path& case_folder, const fs::path& post_folder,
   // Reference data: a verbatim copy, and one table per measurement holding only the rows with
   // a value, which is what the plots draw as points.
   fs::path reference_runout_csv, reference_wall_csv;
-  if (reference) {
-    const fs::path copy = post_folder / "reference.csv";
+  if (input.reference) {
+    const fs::path copy = out.file("reference.csv");
     std::error_code same;
     if (!fs::equivalent(settings.reference_file, copy, same))
       fs::copy_file(settings.reference_file, copy, fs::copy_options::overwrite_existing);
-    reference_runout_csv = post_folder / "reference_runout.csv";
-    reference_wall_csv = post_folder / "reference_wall_height.csv";
+    reference_runout_csv = out.file("reference_runout.csv");
+    reference_wall_csv = out.file("reference_wall_height.csv");
     CsvFile runout(reference_runout_csv, "time,front_travel");
     CsvFile wall(reference_wall_csv, "time,wall_height");
-    for (size_t k = 0; k < reference->time.size(); ++k) {
-      if (reference->front_travel[k]) runout.row(reference->time[k], *reference->front_travel[k]);
-      if (reference->wall_height[k]) wall.row(reference->time[k], *reference->wall_height[k]);
+    const ReferenceData& reference = *input.reference;
+    for (size_t k = 0; k < reference.time.size(); ++k) {
+      if (reference.front_travel[k]) runout.row(reference.time[k], *reference.front_travel[k]);
+      if (reference.wall_height[k]) wall.row(reference.time[k], *reference.wall_height[k]);
     }
     runout.close();
     wall.close();
@@ -198,7 +279,7 @@ PostResult postprocess(const fs::path& case_folder, const fs::path& post_folder,
   const std::string stage = " (stage '" + settings.stage + "')";
   std::vector<PlotSeries> runout_series{{runout_csv, 1, 3, "Lituya (MPM)"}};
   std::vector<PlotSeries> wall_series{{wall_csv, 1, 2, "Lituya (MPM)"}};
-  if (reference) {
+  if (input.reference) {
     runout_series.push_back({reference_runout_csv, 1, 2, "reference", true});
     wall_series.push_back({reference_wall_csv, 1, 2, "reference", true});
   }
@@ -208,15 +289,160 @@ PostResult postprocess(const fs::path& case_folder, const fs::path& post_folder,
     std::snprintf(label, sizeof label, "t = %g s", t);
     profile_series.push_back({profiles_csv, 2, 3, label, false, 1, t});
   }
-  bool plotted = plot_xy(post_folder / "runout.png", "Front travel along the slope" + stage,
-                         "time (s)", "front travel (m)", runout_series);
-  plotted = plot_xy(post_folder / "wall_height.png", "Height of the mass at the wall" + stage,
-                    "time (s)", "height normal to the slope (m)", wall_series, true) &&
+  bool plotted = out.plot("runout.png", "Front travel along the slope" + stage, "time (s)",
+                          "front travel (m)", runout_series);
+  plotted = out.plot("wall_height.png", "Height of the mass at the wall" + stage, "time (s)",
+                     "height normal to the slope (m)", wall_series, true) &&
             plotted;
-  plotted = plot_xy(post_folder / "profiles.png", "Thickness along the slope" + stage,
-                    "along-slope distance s (m)", "thickness normal to the slope (m)",
-                    profile_series, true) &&
+  plotted =
+      out.plot("profiles.png", "Thickness along the slope" + stage, "along-slope distance s (m)",
+               "thickness normal to the slope (m)", profile_series, true) &&
+      plotted;
+  return plotted;
+}
+
+bool measure_water(const PostSettings& settings, const WaterInput& input, int dimension,
+                   PostFolder& out, PostResult& result) {
+  const std::vector<SeriesEntry>& series = input.series;
+  const size_t gauges = settings.gauges.size();
+  const double bin_width = 2 * input.half_width;
+  result.gauge_names = settings.gauge_names;
+  result.gauge_half_width = input.half_width;
+  result.gauge_eta.assign(gauges, {});
+
+  std::vector<size_t> profile_output;
+  for (double t : settings.profile_times) {
+    profile_output.push_back(closest_output(series, t));
+    result.surface_profiles.push_back({t, series[profile_output.back()].time, {}});
+  }
+
+  for (size_t k = 0; k < series.size(); ++k) {
+    const PointCloud liquid = read_liquid_points(series[k].file, dimension);
+    result.liquid_time.push_back(series[k].time);
+    for (size_t g = 0; g < gauges; ++g)
+      result.gauge_eta[g].push_back(gauge_elevation(liquid, settings.gauges[g], input.half_width,
+                                                    settings.still_water_level));
+    const bool profile_wanted =
+        std::find(profile_output.begin(), profile_output.end(), k) != profile_output.end();
+    if (!settings.leading_wave && !profile_wanted) continue;
+    // Anchored on leading_wave_start, so the crest search starts on a bin edge.
+    const std::vector<SurfaceBin> profile =
+        surface_profile(liquid, settings.leading_wave_start, bin_width, settings.still_water_level);
+    if (settings.leading_wave) {
+      const LeadingWave wave =
+          find_leading_wave(profile, settings.leading_wave_start, settings.leading_wave_min_height);
+      result.crest_x.push_back(wave.crest_x);
+      result.crest_eta.push_back(wave.crest_eta);
+      result.max_eta.push_back(wave.max_eta);
+    }
+    for (size_t p = 0; p < profile_output.size(); ++p)
+      if (profile_output[p] == k) result.surface_profiles[p].bins = profile;
+  }
+
+  const std::string stage = " (stage '" + settings.liquid_stage + "')";
+  bool plotted = true;
+
+  if (gauges > 0) {
+    const fs::path gauges_csv = out.file("gauges.csv");
+    std::string header = "time";
+    for (const std::string& name : settings.gauge_names) header += "," + name;
+    CsvFile table(gauges_csv, header);
+    for (size_t k = 0; k < result.liquid_time.size(); ++k) {
+      std::vector<double> row{result.liquid_time[k]};
+      for (size_t g = 0; g < gauges; ++g) row.push_back(result.gauge_eta[g][k]);
+      table.row(row);
+    }
+    table.close();
+
+    std::vector<PlotSeries> plot_series;
+    for (size_t g = 0; g < gauges; ++g) {
+      const int colour = static_cast<int>(g) + 1;
+      plot_series.push_back({gauges_csv, 1, colour + 1, settings.gauge_names[g]});
+      plot_series.back().line_type = colour;
+    }
+    // Reference: a verbatim copy, and per gauge a table of the rows with a value.
+    if (input.reference) {
+      const fs::path copy = out.file("gauge_reference.csv");
+      std::error_code same;
+      if (!fs::equivalent(settings.gauge_reference_file, copy, same))
+        fs::copy_file(settings.gauge_reference_file, copy, fs::copy_options::overwrite_existing);
+      for (size_t g = 0; g < gauges; ++g) {
+        const GaugeReference& reference = *input.reference;
+        bool any = false;
+        for (const auto& v : reference.value[g]) any = any || v.has_value();
+        if (!any) continue;
+        // By index, not by name: a gauge name need not make a valid file name.
+        const fs::path csv = out.file("reference_gauge_" + std::to_string(g + 1) + ".csv");
+        CsvFile table_g(csv, "time," + settings.gauge_names[g]);
+        for (size_t r = 0; r < reference.time.size(); ++r)
+          if (reference.value[g][r]) table_g.row(reference.time[r], *reference.value[g][r]);
+        table_g.close();
+        plot_series.push_back({csv, 1, 2, settings.gauge_names[g] + " (reference)", true});
+        plot_series.back().line_type = static_cast<int>(g) + 1;
+      }
+    }
+    plotted = out.plot("gauges.png", "Water surface at the wave gauges" + stage, "time (s)",
+                       "elevation above still water (m)", plot_series) &&
+              plotted;
+  }
+
+  if (settings.leading_wave) {
+    const fs::path leading_csv = out.file("leading_wave.csv");
+    CsvFile table(leading_csv, "time,crest_x,crest_height,max_eta");
+    for (size_t k = 0; k < result.liquid_time.size(); ++k)
+      table.row(result.liquid_time[k], result.crest_x[k], result.crest_eta[k], result.max_eta[k]);
+    table.close();
+    char beyond[64];
+    std::snprintf(beyond, sizeof beyond, "highest surface at x >= %g m",
+                  settings.leading_wave_start);
+    plotted = out.plot("leading_wave.png", "Leading wave crest height" + stage, "time (s)",
+                       "elevation above still water (m)",
+                       // The crest is drawn last, on top, where it is the highest surface.
+                       {{leading_csv, 1, 4, beyond, false, 0, 0, 2},
+                        {leading_csv, 1, 3, "leading wave crest", false, 0, 0, 1}}) &&
+              plotted;
+  }
+
+  // Two requested times may fall on the same output: its profile is written once.
+  const fs::path surface_csv = out.file("surface_profiles.csv");
+  std::vector<PlotSeries> surface_series;
+  {
+    CsvFile table(surface_csv, "time,x,eta");
+    std::set<double> written;
+    for (const TimedSurface& profile : result.surface_profiles) {
+      if (!written.insert(profile.time).second) continue;
+      for (const SurfaceBin& bin : profile.bins) table.row(profile.time, bin.x, bin.eta);
+      char label[48];
+      std::snprintf(label, sizeof label, "t = %g s", profile.time);
+      surface_series.push_back({surface_csv, 2, 3, label, false, 1, profile.time});
+    }
+    table.close();
+  }
+  plotted = out.plot("surface_profiles.png", "Water surface along the flume" + stage, "x (m)",
+                     "elevation above still water (m)", surface_series) &&
             plotted;
+  return plotted;
+}
+
+}  // namespace
+
+PostResult postprocess(const fs::path& case_folder, const fs::path& post_folder, bool overwrite) {
+  // Everything the user wrote is checked before the post folder is touched, so a typo never
+  // leaves an empty or half-written post folder behind.
+  const PostSettings settings = read_post_settings(case_folder / "post.toml");
+  std::optional<SlideInput> slide;
+  if (settings.measures_slide()) slide = read_slide_input(settings, case_folder);
+  const int dimension = case_dimension(case_folder);
+  std::optional<WaterInput> water;
+  if (settings.measures_water()) water = read_water_input(settings, case_folder, dimension);
+
+  prepare_output_folder(post_folder, overwrite);
+
+  PostResult result;
+  PostFolder out(post_folder, result);
+  bool plotted = true;
+  if (slide) plotted = measure_slide(settings, *slide, case_folder, dimension, out, result);
+  if (water) plotted = measure_water(settings, *water, dimension, out, result) && plotted;
   result.plots_written = plotted;
   return result;
 }

@@ -1,9 +1,11 @@
 // Reading the solver's output series: the .pvd collection (times and files) and the point
-// files it lists.
+// files it lists (solid points and liquid points alike).
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <vtkCommand.h>
@@ -134,7 +136,11 @@ std::vector<SeriesEntry> read_pvd(const fs::path& pvd) {
   return entries;
 }
 
-PointCloud read_points(const fs::path& vtu, int dimension) {
+namespace {
+
+// Solid and liquid point files share the reader; only liquid points carry a meaningful
+// porosity (that of the mixture they are water of).
+PointCloud read_cloud(const fs::path& vtu, int dimension, bool liquid) {
   if (!fs::is_regular_file(vtu))
     throw InputError(vtu.string(), 0, "point output file is missing (listed in the .pvd?)");
   vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -185,7 +191,48 @@ PointCloud read_points(const fs::path& vtu, int dimension) {
     cloud.id.resize(n);
     for (vtkIdType i = 0; i < n; ++i) cloud.id[i] = static_cast<int>(a->GetTuple1(i));
   }
+  if (vtkDataArray* a = liquid ? scalar_array("porosity") : nullptr) {
+    cloud.porosity.resize(n);
+    for (vtkIdType i = 0; i < n; ++i) cloud.porosity[i] = a->GetTuple1(i);
+  }
   return cloud;
+}
+
+}  // namespace
+
+PointCloud read_points(const fs::path& vtu, int dimension) {
+  return read_cloud(vtu, dimension, false);
+}
+
+PointCloud read_liquid_points(const fs::path& vtu, int dimension) {
+  PointCloud cloud = read_cloud(vtu, dimension, true);
+  // Without volumes the surface would sit half a point spacing too low, a bias as large as
+  // the waves of a coarse run; the solver always writes them, so their absence is an error.
+  if (cloud.volume.empty() && !cloud.position.empty())
+    throw InputError(vtu.string(), 0,
+                     "the liquid points have no 'volume' field, which the water surface needs");
+  return cloud;
+}
+
+double point_spacing(const PointCloud& points, size_t i) {
+  if (points.volume.empty() || !(points.volume[i] > 0)) return 0.0;
+  double v = points.volume[i];
+  // Pore water: the point holds the water of a mixture volume volume / porosity.
+  if (!points.porosity.empty() && points.porosity[i] > 0 && points.porosity[i] < 1)
+    v /= points.porosity[i];
+  return points.dimension == 3 ? std::cbrt(v) : std::sqrt(v);
+}
+
+double median_point_spacing(const PointCloud& points) {
+  std::vector<double> spacing;
+  spacing.reserve(points.volume.size());
+  for (size_t i = 0; i < points.volume.size(); ++i)
+    if (points.volume[i] > 0) spacing.push_back(point_spacing(points, i));
+  if (spacing.empty()) return std::numeric_limits<double>::quiet_NaN();
+  // The upper median of an even count: a spacing some point really has.
+  auto middle = spacing.begin() + spacing.size() / 2;
+  std::nth_element(spacing.begin(), middle, spacing.end());
+  return *middle;
 }
 
 }  // namespace lituya::post

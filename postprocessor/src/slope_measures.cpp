@@ -43,12 +43,10 @@ bool is_tracked(const PointCloud& points, const std::vector<bool>& tracked_mater
   return m >= 0 && m < static_cast<int>(tracked_material.size()) && tracked_material[m];
 }
 
-// A point stands for a cell-sized piece of material: its top lies half a point spacing above
-// its centre, so a block of points reports its real height rather than that of its top row.
+// A point's top lies half its spacing above its centre, so a block of points reports its real
+// height rather than that of its top row.
 double half_spacing(const PointCloud& points, size_t i) {
-  if (points.volume.empty() || !(points.volume[i] > 0)) return 0.0;
-  const double v = points.volume[i];
-  return 0.5 * (points.dimension == 3 ? std::cbrt(v) : std::sqrt(v));
+  return 0.5 * point_spacing(points, i);
 }
 
 long long bin_of(double s, double bin_width) {

@@ -1,9 +1,10 @@
 #pragma once
 // Synthetic solver output for the postprocessor tests: blocks of points laid out in the slope
-// frame (where their front and height are known exactly) and written with the same writers
-// the solver uses.
+// frame (where their front and height are known exactly), water columns under a known
+// surface, written with the same writers the solver uses.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -51,6 +52,58 @@ inline void write_cloud(const PointCloud& cloud, const std::filesystem::path& fi
     std::vector<std::int32_t> id(cloud.id.begin(), cloud.id.end());
     writer.add_point_data("id", id);
   }
+  writer.write(file);
+}
+
+// Water in columns of side-h squares (cubes in 3D, `layers` of them across the flume width)
+// whose centres are at x0 + (i + 1/2) h, for x up to x1. Each column is filled from its top
+// down to `bottom`: the top point's centre is h/2 below surface(x) of the column centre, so
+// the column's true surface, top point plus half a spacing, is surface(x) exactly.
+template <typename Surface>
+inline void add_water(PointCloud& cloud, double x0, double x1, double bottom, double h,
+                      Surface surface, int layers = 0, int material = 0) {
+  const int nx = static_cast<int>(std::lround((x1 - x0) / h));
+  const int nz = layers > 0 ? layers : 1;
+  if (layers > 0) cloud.dimension = 3;
+  for (int i = 0; i < nx; ++i) {
+    const double x = x0 + (i + 0.5) * h;
+    for (double y = surface(x) - 0.5 * h; y - 0.5 * h >= bottom - 1e-12; y -= h)
+      for (int k = 0; k < nz; ++k) {
+        const double z = layers > 0 ? (k + 0.5) * h : 0.0;
+        cloud.position.emplace_back(x, y, z);
+        cloud.material.push_back(material);
+        cloud.volume.push_back(layers > 0 ? h * h * h : h * h);
+        cloud.id.push_back(static_cast<int>(cloud.id.size()));
+      }
+  }
+}
+
+// Liquid points with every array the solver writes into <stage>_liquid_NNNN.vtu.
+inline void write_liquid_cloud(const PointCloud& cloud, const std::filesystem::path& file) {
+  const size_t n = cloud.position.size();
+  std::vector<double> xyz, velocity(3 * n, 0.0), pressure, mass;
+  // Free water unless the cloud says otherwise.
+  const std::vector<double> porosity =
+      cloud.porosity.empty() ? std::vector<double>(n, 1.0) : cloud.porosity;
+  for (size_t i = 0; i < n; ++i) {
+    const auto& p = cloud.position[i];
+    xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+    velocity[3 * i] = 0.1 * p.y();  // anything: the surface must not depend on it
+    pressure.push_back(1000.0 * 9.81 * std::max(0.0, 0.15 - p.y()));
+    mass.push_back(1000.0 * cloud.volume[i]);
+  }
+  lituya::VtuWriter writer;
+  writer.set_points(xyz);
+  writer.set_vertex_cells();
+  writer.add_point_data("velocity", 3, velocity);
+  writer.add_point_data("pressure", 1, pressure);
+  writer.add_point_data("porosity", 1, porosity);
+  writer.add_point_data("mass", 1, mass);
+  writer.add_point_data("volume", 1, cloud.volume);
+  std::vector<std::int32_t> material(cloud.material.begin(), cloud.material.end());
+  writer.add_point_data("material", material);
+  std::vector<std::int32_t> id(cloud.id.begin(), cloud.id.end());
+  writer.add_point_data("id", id);
   writer.write(file);
 }
 

@@ -18,6 +18,9 @@ struct PlotSeries {
   // relative 1e-9) are drawn: one curve per time out of a table of several times.
   int select_column = 0;
   double select_value = 0;
+  // gnuplot line type (colour) when > 0, so that a measurement and its reference points
+  // share a colour; 0 takes the next one in turn.
+  int line_type = 0;
 };
 
 // 1-based number of the column called `name` in the header line of `csv`; InputError naming

@@ -1,12 +1,17 @@
 #pragma once
 // `lituya post`: what a landslide run is judged by. From the solver's point output series it
 // measures, at every output time, how far the front of the sliding mass has run down the
-// slope, how thick the mass is along the slope, and how high it stands at the upstream wall,
-// and writes them as CSV tables and PNG plots next to the reference data of the case.
+// slope, how thick the mass is along the slope, and how high it stands at the upstream wall;
+// from the liquid (water) point series, the surface elevation at wave gauges and the height
+// and position of the leading wave. It writes them as CSV tables and PNG plots next to the
+// reference data of the case.
 //
-// Every measurement is made in the slope frame (along-slope distance s, height t above the
+// Slide measurements are made in the slope frame (along-slope distance s, height t above the
 // slope surface), because that is how the laboratory flumes report runout and thickness.
+// Water measurements are made in the global frame (x along the flume, y vertical), because
+// that is how wave gauges are placed and read.
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -18,6 +23,8 @@ namespace lituya::post {
 
 // post.toml, validated (format "lituya-post" version 1; see manuals/file-formats.md).
 struct PostSettings {
+  // Slide measures (runout, wall height, thickness profiles): taken when track_materials
+  // names at least one material, skipped otherwise (a water-only case).
   std::array<double, 3> slope_origin{};  // a point on the slope surface, s = t = 0
   double slope_angle_deg = 0;            // the slope descends towards +x
   std::vector<std::string> track_materials;
@@ -29,11 +36,27 @@ struct PostSettings {
   std::string stage = "release";        // the output series to read
   std::string reference_file;           // absolute, or empty when none is given
 
+  // Water surface measures: taken when there are gauges or leading_wave is true.
+  std::vector<double> gauges;              // x of the wave gauges (vertical lines), m
+  std::vector<std::string> gauge_names;    // one per gauge; default "x=<position>"
+  double still_water_level = NAN;          // m, y of the still water surface
+  std::optional<double> gauge_half_width;  // m; absent: the median point spacing
+  bool leading_wave = false;               // track the first wave crest
+  double leading_wave_start = 0;           // m, x from which the crest is looked for
+  double leading_wave_min_height = 0.002;  // m, smallest crest that counts as a wave
+  std::string liquid_stage;                // the liquid series read; default = stage
+  std::string gauge_reference_file;        // absolute, or empty when none is given
+
+  bool measures_slide() const { return !track_materials.empty(); }
+  bool measures_water() const { return !gauges.empty() || leading_wave; }
+
   // Where the settings came from, so that errors found later (a material name that
   // materials.toml does not know, a stage that was never written) point at the right line.
   std::string file;
   int track_materials_line = 0;
   int stage_line = 0;
+  int water_line = 0;  // the line that asked for the water measures (gauges, leading_wave
+                       // or liquid_stage), where a missing liquid series is reported
 };
 PostSettings read_post_settings(const std::filesystem::path& post_toml);
 
@@ -59,11 +82,26 @@ struct PointCloud {
   std::vector<int> material;   // id in materials.toml
   std::vector<double> volume;  // m3 (m2 per metre in 2D)
   std::vector<int> id;         // index of the point in the case's points.vtu
-  int dimension = 2;           // 2: plane strain (z = 0), 3: flume with width along z
+  // Liquid points only (read_liquid_points): porosity n of the mixture the point is water
+  // of, 1 for free water; its `volume` is the water volume, n times the mixture volume.
+  std::vector<double> porosity;
+  int dimension = 2;  // 2: plane strain (z = 0), 3: flume with width along z
 };
 // `dimension` 0 infers it: 2 when every z is 0, else 3. InputError on a missing or garbled
 // file.
 PointCloud read_points(const std::filesystem::path& vtu, int dimension = 0);
+// The liquid (water) points of one output, <stage>_liquid_NNNN.vtu: as read_points, with
+// `porosity` when present, and an InputError naming the file when it has no `volume`, which
+// the free surface needs.
+PointCloud read_liquid_points(const std::filesystem::path& vtu, int dimension = 0);
+
+// A point stands for a cell-sized piece of material: its spacing is sqrt(V) in 2D and
+// cbrt(V) in 3D, 0 when the volume is unknown or not positive. V is the volume, or for a
+// liquid point with a porosity n in (0, 1) (pore water of saturated soil) volume / n, the
+// mixture volume the point was seeded for.
+double point_spacing(const PointCloud& points, size_t i);
+// Median of point_spacing over the points with a positive volume; NaN when there are none.
+double median_point_spacing(const PointCloud& points);
 
 // Slope frame: s = along-slope distance from the origin (downslope positive; the slope
 // descends towards +x at `slope_angle_deg`), t = distance normal to the slope (positive into
@@ -119,21 +157,89 @@ struct ReferenceData {
 };
 ReferenceData read_reference(const std::filesystem::path& csv);
 
+// The reference CSV of the wave gauges: a header line `time,<gauge name>...` (any order, any
+// subset of the gauges), then rows; a blank field means no value. value[g][row] belongs to
+// gauge g of `gauge_names`. A column that names no gauge is an InputError at the header.
+struct GaugeReference {
+  std::vector<double> time;
+  std::vector<std::vector<std::optional<double>>> value;
+};
+GaugeReference read_gauge_reference(const std::filesystem::path& csv,
+                                    const std::vector<std::string>& gauge_names);
+
+// Free surface at a wave gauge: the highest top (y + half point spacing, see point_spacing)
+// of the liquid points whose x lies within half_width of gauge_x (in 3D at any z), minus
+// still_water_level. NaN when no liquid point is in that column. A point's top rather than its
+// centre is the surface, so still water made of whole points reads exactly 0.
+double gauge_elevation(const PointCloud& liquid, double gauge_x, double half_width,
+                       double still_water_level);
+
+// One bin of a free-surface profile: x is the bin centre, eta the elevation of the surface
+// above still water (as gauge_elevation measures it over the bin), NaN when the bin holds no
+// liquid point.
+struct SurfaceBin {
+  double x, eta;
+};
+// Bins [origin + k w, origin + (k + 1) w) from the most upstream to the most downstream
+// liquid point, empty ones included (so that neighbours in the list are neighbours in x).
+// A point flung absurdly far would make that list huge; then only occupied bins are listed.
+std::vector<SurfaceBin> surface_profile(const PointCloud& liquid, double origin, double bin_width,
+                                        double still_water_level);
+
+// The leading (first) wave of a surface profile, the crest that has travelled furthest
+// downstream (+x, away from the slide), as the paper's Fig. 19 follows it. Among the bins
+// whose centre lies at or beyond `from_x`:
+//   max_eta   = the highest eta;
+//   threshold = max(min_height, 0.1 max_eta);
+//   a crest is a bin with eta > threshold that is at least as high as every non-empty bin
+//   within 2 bins on either side (bins outside `from_x` included), so a one-bin bump on the
+//   flank of a wave, or ripples below the threshold, are not taken for a wave;
+//   the leading crest is the most downstream crest.
+// All NaN when no bin holds liquid; crest_x and crest_eta NaN when no bin is a crest.
+struct LeadingWave {
+  double crest_x = NAN, crest_eta = NAN, max_eta = NAN;
+};
+LeadingWave find_leading_wave(const std::vector<SurfaceBin>& profile, double from_x,
+                              double min_height);
+
 struct TimedProfile {
   double requested_time;  // from profile_times
   double time;            // of the output closest to it
   std::vector<ProfileBin> bins;
 };
 
+struct TimedSurface {
+  double requested_time;  // from profile_times
+  double time;            // of the liquid output closest to it
+  std::vector<SurfaceBin> bins;
+};
+
 struct PostResult {
+  // Slide measures; empty when track_materials is absent.
   std::vector<double> time, front_position, front_travel, wall_height;
   std::vector<TimedProfile> profiles;
-  bool plots_written = false;  // false when gnuplot is missing or failed
+
+  // Water measures, one value per liquid output; empty when no gauges and no leading wave
+  // were asked for. NaN marks "no value" (no water at the gauge, no wave crest).
+  std::vector<double> liquid_time;
+  std::vector<std::string> gauge_names;
+  std::vector<std::vector<double>> gauge_eta;       // [gauge][output], m above still water
+  double gauge_half_width = NAN;                    // m, as given or inferred from the volumes
+  std::vector<double> crest_x, crest_eta, max_eta;  // leading wave (when asked for)
+  std::vector<TimedSurface> surface_profiles;
+
+  std::vector<std::filesystem::path> files;  // everything written into the post folder
+  bool plots_written = false;                // false when gnuplot is missing or failed
 };
-// Reads case_folder/post.toml, materials.toml, stages.toml (dimension) and
-// output/<stage>_points.pvd, and writes into post_folder (refused if it holds files, unless
-// `overwrite`): runout.csv, wall_height.csv, profiles.csv, reference copies, and
-// runout.png, wall_height.png, profiles.png with their .gp scripts.
+// Reads case_folder/post.toml and what it asks for: materials.toml, stages.toml (dimension),
+// output/<stage>_points.pvd (slide measures) and output/<liquid_stage>_liquid.pvd (water
+// measures). Writes into post_folder (refused if it holds files, unless `overwrite`):
+//   slide: runout.csv, wall_height.csv, profiles.csv, reference copies, and runout.png,
+//          wall_height.png, profiles.png;
+//   water: gauges.csv, gauges.png and the gauge reference copies (with gauges),
+//          leading_wave.csv, leading_wave.png (with leading_wave), surface_profiles.csv,
+//          surface_profiles.png;
+// each PNG with its .gp script. Everything is validated before the folder is touched.
 PostResult postprocess(const std::filesystem::path& case_folder,
                        const std::filesystem::path& post_folder, bool overwrite);
 

@@ -1,0 +1,360 @@
+// `lituya post` on a synthetic water case: wave gauges, the leading wave and the surface
+// profiles read off a liquid series, the validation of the water keys of post.toml, and a
+// case with both a slide and water.
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "lituya/common/input_error.hpp"
+#include "lituya/post/plot.hpp"
+#include "synthetic_output.hpp"
+
+namespace lituya::post {
+namespace {
+
+namespace fs = std::filesystem;
+using synthetic::add_water;
+using synthetic::read_csv_rows;
+using synthetic::read_text;
+using synthetic::write_text;
+
+// Line numbers matter: the error tests below refer to them. No track_materials: a
+// water-only case, whose slide measures are skipped.
+const char* kWaterPostToml =
+    "format = \"lituya-post\"\n"        // 1
+    "version = 1\n"                     // 2
+    "stage = \"release\"\n"             // 3
+    "gauges = [0.45, 0.75]\n"           // 4
+    "gauge_names = [\"G1\", \"G2\"]\n"  // 5
+    "still_water_level = 0.15\n"        // 6
+    "leading_wave = true\n"             // 7
+    "leading_wave_start = 0.3\n"        // 8
+    "profile_times = [0.0, 0.45]\n";    // 9
+
+std::string with_line(const std::string& text, int line, const std::string& replacement) {
+  std::string out;
+  size_t start = 0;
+  for (int l = 1; start < text.size(); ++l) {
+    size_t end = text.find('\n', start);
+    out += (l == line ? replacement : text.substr(start, end - start)) + "\n";
+    start = end + 1;
+  }
+  return out;
+}
+
+double gaussian(double x, double centre, double height, double width) {
+  const double d = (x - centre) / width;
+  return height * std::exp(-0.5 * d * d);
+}
+
+// Still water 0.15 m deep over x in [0, 1.5] with 5 mm points; a 0.02 m crest passes the
+// first gauge (x = 0.45) at t = 0.25 s and a 0.015 m crest the second (x = 0.75) at 0.5 s.
+class WaterCase : public synthetic::TempFolderTest {
+ protected:
+  static constexpr double kTimes[3] = {0.0, 0.25, 0.5};
+  static constexpr double kCrestX[3] = {0.0, 0.45, 0.75};
+  static constexpr double kCrestHeight[3] = {0.0, 0.02, 0.015};
+
+  void SetUp() override {
+    TempFolderTest::SetUp();
+    case_ = folder_ / "case";
+    write_text(case_ / "post.toml", kWaterPostToml);
+    write_text(case_ / "materials.toml",
+               "format = \"lituya-materials\"\nversion = 1\n[[material]]\nname = \"water\"\n");
+    write_text(case_ / "stages.toml", "format = \"lituya-stages\"\nversion = 1\ndimension = 2\n");
+    fs::create_directories(case_ / "output");
+    PvdWriter pvd(case_ / "output" / "release_liquid.pvd");
+    for (int k = 0; k < 3; ++k) {
+      PointCloud water;
+      add_water(water, 0.0, 1.5, 0.0, 0.005,
+                [&](double x) { return 0.15 + gaussian(x, kCrestX[k], kCrestHeight[k], 0.05); });
+      char name[64];
+      std::snprintf(name, sizeof name, "release_liquid_%04d.vtu", k);
+      synthetic::write_liquid_cloud(water, case_ / "output" / name);
+      pvd.add(kTimes[k], name);
+    }
+  }
+
+  void expect_input_error(const std::string& post_toml, int line, const std::string& mention) {
+    write_text(case_ / "post.toml", post_toml);
+    try {
+      postprocess(case_, case_ / "post", false);
+      ADD_FAILURE() << "no InputError; expected one at line " << line;
+    } catch (const InputError& e) {
+      EXPECT_EQ(fs::path(e.file()).filename(), "post.toml") << e.what();
+      EXPECT_EQ(e.line(), line) << e.what();
+      EXPECT_NE(std::string(e.what()).find(mention), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(case_ / "post"));
+  }
+
+  bool written(const PostResult& result, const char* name) const {
+    return std::find(result.files.begin(), result.files.end(), case_ / "post" / name) !=
+           result.files.end();
+  }
+
+  fs::path case_;
+};
+
+TEST_F(WaterCase, GaugesLeadingWaveAndSurfaceProfiles) {
+  const PostResult result = postprocess(case_, case_ / "post", false);
+
+  // Half-width inferred from the point volumes: sqrt(0.005^2).
+  EXPECT_NEAR(result.gauge_half_width, 0.005, 1e-15);
+
+  // gauges.csv: at the crest the window's highest point is the crest (within 1e-4 m); away
+  // from the crest the water is still (the Gaussian is below 1e-6 m 0.3 m away).
+  EXPECT_EQ(read_text(case_ / "post" / "gauges.csv").substr(0, 13), "time,G1,G2\n0,");
+  const auto gauges = read_csv_rows(case_ / "post" / "gauges.csv");
+  ASSERT_EQ(gauges.size(), 3u);
+  const double expected[3][2] = {{0.0, 0.0}, {0.02, 0.0}, {0.0, 0.015}};
+  for (int k = 0; k < 3; ++k) {
+    ASSERT_EQ(gauges[k].size(), 3u);
+    EXPECT_DOUBLE_EQ(gauges[k][0], kTimes[k]);
+    for (int g = 0; g < 2; ++g) {
+      EXPECT_NEAR(gauges[k][1 + g], expected[k][g], 1e-4) << "t = " << kTimes[k] << " G" << g + 1;
+      EXPECT_NEAR(result.gauge_eta[g][k], expected[k][g], 1e-4);
+    }
+  }
+  EXPECT_NEAR(gauges[0][1], 0.0, 1e-12);  // still water reads exactly 0
+
+  // leading_wave.csv: no crest in still water; then the crest within one bin (0.01 m) of
+  // its true position, and its height.
+  const auto leading = read_csv_rows(case_ / "post" / "leading_wave.csv");
+  ASSERT_EQ(leading.size(), 3u);
+  EXPECT_TRUE(std::isnan(leading[0][1]) && std::isnan(leading[0][2]));
+  EXPECT_NEAR(leading[0][3], 0.0, 1e-12);
+  for (int k = 1; k < 3; ++k) {
+    EXPECT_NEAR(leading[k][1], kCrestX[k], 0.01) << "t = " << kTimes[k];
+    EXPECT_NEAR(leading[k][2], kCrestHeight[k], 1e-4) << "t = " << kTimes[k];
+    EXPECT_NEAR(leading[k][3], kCrestHeight[k], 1e-4) << "t = " << kTimes[k];
+    EXPECT_NEAR(result.crest_x[k], kCrestX[k], 0.01);
+  }
+
+  // surface_profiles.csv: profile_times 0 and 0.45 -> outputs at 0 and 0.5; bins of
+  // 2 x 0.005 m anchored on x = 0.3, from the bin holding x = 0.0025 to the one holding
+  // 1.4975: k = -30 ... 119, 150 bins per time.
+  ASSERT_EQ(result.surface_profiles.size(), 2u);
+  EXPECT_DOUBLE_EQ(result.surface_profiles[1].time, 0.5);
+  const auto profiles = read_csv_rows(case_ / "post" / "surface_profiles.csv");
+  ASSERT_EQ(profiles.size(), 300u);
+  EXPECT_NEAR(profiles[0][1], 0.005, 1e-12);
+  for (int r = 0; r < 150; ++r) EXPECT_NEAR(profiles[r][2], 0.0, 1e-12) << "x = " << profiles[r][1];
+  double highest = 0, at = 0;
+  for (int r = 150; r < 300; ++r)
+    if (profiles[r][2] > highest) highest = profiles[r][2], at = profiles[r][1];
+  EXPECT_NEAR(at, 0.75, 0.01);
+  EXPECT_NEAR(highest, 0.015, 1e-4);
+
+  // Water only: the slide measures are skipped, not failed.
+  EXPECT_TRUE(result.time.empty());
+  EXPECT_FALSE(fs::exists(case_ / "post" / "runout.csv"));
+  EXPECT_FALSE(fs::exists(case_ / "post" / "wall_height.csv"));
+  for (const char* name : {"gauges.csv", "leading_wave.csv", "surface_profiles.csv", "gauges.gp",
+                           "leading_wave.gp", "surface_profiles.gp"}) {
+    EXPECT_TRUE(fs::exists(case_ / "post" / name)) << name;
+    EXPECT_TRUE(written(result, name)) << name;
+  }
+  if (gnuplot_available()) {
+    EXPECT_TRUE(result.plots_written);
+    for (const char* png : {"gauges.png", "leading_wave.png", "surface_profiles.png"}) {
+      EXPECT_GT(fs::file_size(case_ / "post" / png), 1000u) << png;
+      EXPECT_TRUE(written(result, png)) << png;
+    }
+  }
+}
+
+TEST_F(WaterCase, GaugeReferenceIsOverlaidInTheGaugesColours) {
+  write_text(case_ / "gauges_reference.csv",
+             "# Viroulet et al. 2014, read off fig. 9\n"
+             "time, G2 ,G1\n0.25,,0.019\n0.5,0.014,\n0.6,,\n");
+  write_text(case_ / "post.toml",
+             std::string(kWaterPostToml) + "gauge_reference = \"gauges_reference.csv\"\n");
+  const PostResult result = postprocess(case_, case_ / "post", false);
+  EXPECT_EQ(read_text(case_ / "post" / "gauge_reference.csv"),
+            read_text(case_ / "gauges_reference.csv"));
+  const auto g1 = read_csv_rows(case_ / "post" / "reference_gauge_1.csv");
+  ASSERT_EQ(g1.size(), 1u);
+  EXPECT_DOUBLE_EQ(g1[0][0], 0.25);
+  EXPECT_DOUBLE_EQ(g1[0][1], 0.019);
+  const auto g2 = read_csv_rows(case_ / "post" / "reference_gauge_2.csv");
+  ASSERT_EQ(g2.size(), 1u);
+  EXPECT_DOUBLE_EQ(g2[0][0], 0.5);
+  EXPECT_DOUBLE_EQ(g2[0][1], 0.014);
+  const std::string script = read_text(case_ / "post" / "gauges.gp");
+  EXPECT_NE(script.find("'reference_gauge_2.csv' skip 1 using 1:($2) with points pt 7 ps 1.2 lt 2"),
+            std::string::npos)
+      << script;
+  EXPECT_NE(script.find("'gauges.csv' skip 1 using 1:($3) with lines lw 2 lt 2 title 'G2'"),
+            std::string::npos)
+      << script;
+  EXPECT_TRUE(written(result, "reference_gauge_2.csv"));
+}
+
+TEST_F(WaterCase, GaugeReferenceColumnThatNamesNoGaugeIsAnError) {
+  write_text(case_ / "gauges_reference.csv", "time,G1,G3\n0.25,0.019,0.01\n");
+  write_text(case_ / "post.toml",
+             std::string(kWaterPostToml) + "gauge_reference = \"gauges_reference.csv\"\n");
+  try {
+    postprocess(case_, case_ / "post", false);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(fs::path(e.file()).filename(), "gauges_reference.csv") << e.what();
+    EXPECT_EQ(e.line(), 1) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"G3\""), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(case_ / "post"));
+}
+
+TEST_F(WaterCase, DefaultGaugeNamesAndAGivenHalfWidth) {
+  // Without names the columns are "x=<position>". A half-width of 0.05 m takes in the crest
+  // of the t = 0.5 s wave from x = 0.71: the highest point within 0.05 m is the crest.
+  write_text(case_ / "post.toml", with_line(with_line(kWaterPostToml, 5, "gauge_half_width = 0.05"),
+                                            4, "gauges = [0.45, 0.71]"));
+  const PostResult result = postprocess(case_, case_ / "post", false);
+  EXPECT_DOUBLE_EQ(result.gauge_half_width, 0.05);
+  EXPECT_EQ(read_text(case_ / "post" / "gauges.csv").substr(0, 21), "time,x=0.45,x=0.71\n0,");
+  const auto gauges = read_csv_rows(case_ / "post" / "gauges.csv");
+  ASSERT_EQ(gauges.size(), 3u);
+  // With the default 0.005 m window it would read the wave's flank at 0.71, 0.0109 m.
+  EXPECT_NEAR(gauges[2][2], 0.015, 1e-4);
+}
+
+TEST_F(WaterCase, GaugeWithoutWaterIsABlankCell) {
+  write_text(case_ / "post.toml", with_line(kWaterPostToml, 4, "gauges = [0.45, 2.0]"));
+  const PostResult result = postprocess(case_, case_ / "post", false);
+  const auto gauges = read_csv_rows(case_ / "post" / "gauges.csv");
+  ASSERT_EQ(gauges.size(), 3u);
+  for (const auto& row : gauges) {
+    EXPECT_FALSE(std::isnan(row[1]));
+    EXPECT_TRUE(std::isnan(row[2]));  // the tank ends at x = 1.5
+  }
+  EXPECT_TRUE(std::isnan(result.gauge_eta[1][1]));
+}
+
+TEST_F(WaterCase, NoLiquidSeriesIsAnErrorAtTheGaugesLine) {
+  fs::remove(case_ / "output" / "release_liquid.pvd");
+  expect_input_error(kWaterPostToml, 4, "release_liquid.pvd");
+}
+
+TEST_F(WaterCase, NoLiquidSeriesForTheLeadingWaveIsAnErrorAtItsLine) {
+  fs::remove(case_ / "output" / "release_liquid.pvd");
+  expect_input_error(with_line(with_line(kWaterPostToml, 4, "#"), 5, "#"), 7, "leading wave");
+}
+
+TEST_F(WaterCase, LiquidStageNamesTheSeries) {
+  expect_input_error(std::string(kWaterPostToml) + "liquid_stage = \"flood\"\n", 10,
+                     "flood_liquid.pvd");
+  fs::rename(case_ / "output" / "release_liquid.pvd", case_ / "output" / "flood_liquid.pvd");
+  write_text(case_ / "post.toml", std::string(kWaterPostToml) + "liquid_stage = \"flood\"\n");
+  const PostResult result = postprocess(case_, case_ / "post", false);
+  EXPECT_EQ(result.liquid_time.size(), 3u);
+}
+
+TEST_F(WaterCase, UnknownKeyIsAnErrorAtItsLine) {
+  expect_input_error(std::string(kWaterPostToml) + "gauge_halfwidth = 0.01\n", 10,
+                     "gauge_halfwidth");
+}
+
+TEST_F(WaterCase, WrongTypesAreErrorsAtTheirLines) {
+  expect_input_error(with_line(kWaterPostToml, 4, "gauges = \"0.45\""), 4, "gauges");
+  expect_input_error(with_line(kWaterPostToml, 5, "gauge_names = [1, 2]"), 5, "gauge_names");
+  expect_input_error(with_line(kWaterPostToml, 7, "leading_wave = 1"), 7, "leading_wave");
+  expect_input_error(with_line(kWaterPostToml, 6, "still_water_level = \"0.15\""), 6,
+                     "still_water_level");
+}
+
+TEST_F(WaterCase, OutOfRangeValuesAreErrorsAtTheirLines) {
+  expect_input_error(std::string(kWaterPostToml) + "gauge_half_width = 0.0\n", 10,
+                     "gauge_half_width");
+  expect_input_error(std::string(kWaterPostToml) + "leading_wave_min_height = -0.001\n", 10,
+                     "leading_wave_min_height");
+  expect_input_error(with_line(kWaterPostToml, 4, "gauges = [0.45, nan]"), 4, "gauges");
+  expect_input_error(with_line(kWaterPostToml, 8, "leading_wave_start = inf"), 8,
+                     "leading_wave_start");
+}
+
+TEST_F(WaterCase, GaugeNamesMustMatchTheGauges) {
+  expect_input_error(with_line(kWaterPostToml, 5, "gauge_names = [\"G1\"]"), 5, "1 names for 2");
+  expect_input_error(with_line(kWaterPostToml, 5, "gauge_names = [\"G1\", \"G1\"]"), 5,
+                     "two gauges are called \"G1\"");
+  expect_input_error(with_line(kWaterPostToml, 5, "gauge_names = [\"G1\", \"a,b\"]"), 5, "a,b");
+  // Default names repeat when the positions do.
+  expect_input_error(with_line(with_line(kWaterPostToml, 5, "#"), 4, "gauges = [0.45, 0.45]"), 4,
+                     "x=0.45");
+}
+
+TEST_F(WaterCase, StillWaterLevelIsRequiredForGaugesAndTheLeadingWave) {
+  expect_input_error(with_line(kWaterPostToml, 6, "#"), 4, "still_water_level");
+  expect_input_error(with_line(with_line(with_line(kWaterPostToml, 4, "#"), 5, "#"), 6, "#"), 7,
+                     "still_water_level");
+}
+
+TEST_F(WaterCase, GaugeReferenceNeedsGaugesAndAFile) {
+  write_text(case_ / "gauges_reference.csv", "time,G1\n0.25,0.019\n");
+  expect_input_error(
+      with_line(with_line(kWaterPostToml, 4, "#"), 5, "gauge_reference = \"gauges_reference.csv\""),
+      5, "no 'gauges'");
+  expect_input_error(std::string(kWaterPostToml) + "gauge_reference = \"nowhere.csv\"\n", 10,
+                     "nowhere.csv");
+}
+
+TEST_F(WaterCase, RunoutReferenceWithoutTrackedMaterialsIsAnError) {
+  write_text(case_ / "reference.csv", "time,front_travel\n0,0\n");
+  expect_input_error(std::string(kWaterPostToml) + "reference = \"reference.csv\"\n", 10,
+                     "gauge_reference");
+}
+
+TEST_F(WaterCase, WithoutWaterOrTrackedMaterialsNothingIsMeasured) {
+  // A misspelt `gauges` leaves a post.toml that asks for nothing: said so, at the top.
+  const std::string typo = with_line(with_line(kWaterPostToml, 4, "gauge = [0.45, 0.75]"), 5, "#");
+  expect_input_error(with_line(typo, 7, "leading_wave = false"), 1, "measures nothing");
+}
+
+TEST_F(WaterCase, EmptyTrackMaterialsSkipsTheSlide) {
+  write_text(case_ / "post.toml", std::string(kWaterPostToml) + "track_materials = []\n");
+  const PostResult result = postprocess(case_, case_ / "post", false);
+  EXPECT_TRUE(result.time.empty());
+  EXPECT_FALSE(fs::exists(case_ / "post" / "runout.csv"));
+  EXPECT_EQ(result.crest_x.size(), 3u);
+}
+
+// Case B's layout: a slide (tracked, points series) and water (liquid series) in one case.
+TEST_F(WaterCase, SlideAndWaterAreBothMeasured) {
+  write_text(case_ / "materials.toml",
+             "format = \"lituya-materials\"\nversion = 1\n[[material]]\nname = \"beads\"\n"
+             "[[material]]\nname = \"water\"\n");
+  SlopeFrame frame(Eigen::Vector3d(-0.3, 0.3, 0.0), 45.0);
+  PvdWriter pvd(case_ / "output" / "release_points.pvd");
+  for (int k = 0; k < 2; ++k) {
+    PointCloud slide;
+    synthetic::add_block(slide, frame, 0.0, 0.1 + 0.1 * k, 0.0, 0.05, 0.005, 0);
+    const std::string name = "release_points_000" + std::to_string(k) + ".vtu";
+    synthetic::write_cloud(slide, case_ / "output" / name);
+    pvd.add(0.5 * k, name);
+  }
+  write_text(case_ / "post.toml", std::string(kWaterPostToml) +
+                                      "track_materials = [\"beads\"]\n"
+                                      "slope_origin = [-0.3, 0.3]\nslope_angle = 45.0\n");
+  const PostResult result = postprocess(case_, case_ / "post", false);
+  ASSERT_EQ(result.front_travel.size(), 2u);
+  EXPECT_NEAR(result.front_position[1], 0.2, 1e-9);
+  EXPECT_NEAR(result.front_travel[1], 0.1, 1e-9);
+  EXPECT_EQ(result.liquid_time.size(), 3u);
+  EXPECT_NEAR(result.gauge_eta[0][1], 0.02, 1e-4);
+  for (const char* name : {"runout.csv", "wall_height.csv", "profiles.csv", "gauges.csv",
+                           "leading_wave.csv", "surface_profiles.csv"})
+    EXPECT_TRUE(written(result, name)) << name;
+}
+
+TEST_F(WaterCase, SlideKeysAreStillCheckedWhenOnlyWaterIsMeasured) {
+  // Without track_materials the slope frame is optional, but a wrong one is still an error.
+  expect_input_error(std::string(kWaterPostToml) + "slope_angle = 95.0\n", 10, "slope_angle");
+  // And with track_materials it is required, as in a dry case.
+  expect_input_error(std::string(kWaterPostToml) + "track_materials = [\"water\"]\n", 1,
+                     "slope_origin");
+}
+
+}  // namespace
+}  // namespace lituya::post
