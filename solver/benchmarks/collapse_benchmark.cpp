@@ -1,8 +1,11 @@
 // Throughput benchmark: a dry Mohr-Coulomb column collapse (>= 100k points) on a structured
 // triangle (2D) or tetrahedron (3D) mesh. Reports point-steps per second (median of several
-// timed segments, one core unless --threads is given) and bytes per point.
+// timed segments, one core unless --threads is given) and bytes per point. With --water 1 the
+// column is saturated and collapses into a pool of still water 0.3 m deep (two-phase: solid
+// and liquid points both count as points).
 //
 //   lituya_benchmark [--dim 2|3] [--segments 5] [--steps 50] [--threads 1] [--cell 0.005]
+//                    [--water 0|1]
 #include <omp.h>
 
 #include <algorithm>
@@ -30,6 +33,17 @@ Material sand() {
   m.youngs_modulus = 2e7;
   m.poisson_ratio = 0.3;
   m.friction_angle = 30;
+  m.grain_diameter = 0.002;
+  return m;
+}
+
+Material water() {
+  Material m;
+  m.name = "water";
+  m.model = MaterialModel::kWater;
+  m.liquid_density = 1000;
+  m.bulk_modulus = 2.15e7;
+  m.viscosity = 1e-3;
   return m;
 }
 
@@ -41,7 +55,7 @@ BoundaryCondition condition(BoundaryType type, double friction = 0) {
 }
 
 template <int dim>
-void run(int segments, int steps, int threads, double cell) {
+void run(int segments, int steps, int threads, double cell, bool with_water) {
   const std::size_t memory_before = lituya::current_memory_bytes();
   BoxScene<dim> scene;
   using Vec = Eigen::Matrix<double, dim, 1>;
@@ -55,6 +69,15 @@ void run(int segments, int steps, int threads, double cell) {
   for (int d = 0; d < dim; ++d)
     scene.cells[d] = static_cast<int>(std::lround(scene.domain_size(d) / cell));
   scene.material = sand();
+  if (with_water) {
+    // Water up to y = 0.3 m everywhere: the lower part of the column is saturated, the rest
+    // of the floor is a pool of free water.
+    scene.with_water = true;
+    scene.water = water();
+    scene.water_min = Vec::Zero();
+    scene.water_max = scene.domain_size;
+    scene.water_max(1) = 0.3;
+  }
   scene.gravity.assign(dim, 0.0);
   scene.gravity[1] = -9.81;
   scene.boundaries = {{"x-", condition(BoundaryType::kRoller)},
@@ -68,7 +91,7 @@ void run(int segments, int steps, int threads, double cell) {
   std::vector<std::string> names;
   for (const auto& b : sim.description().boundaries) names.push_back(b.name);
   sim.activate_boundaries(names);
-  const std::size_t n = sim.points().size();
+  const std::size_t n = sim.point_count();
   // Warm up: the collapse starts and caches fill.
   for (int i = 0; i < 10; ++i) sim.step(0.5 * sim.stable_time_step(1.0), 0.0);
   std::vector<double> rates;
@@ -83,18 +106,19 @@ void run(int segments, int steps, int threads, double cell) {
   const double median = rates[rates.size() / 2];
   const std::size_t peak = lituya::peak_memory_bytes();
   std::printf(
-      "dim=%d points=%zu cells=%zu nodes=%zu threads=%d steps=%d x %d\n"
+      "dim=%d points=%zu (liquid %zu) cells=%zu nodes=%zu threads=%d steps=%d x %d\n"
       "  point-steps/s: median %.3e (min %.3e, max %.3e)\n"
       "  memory: solver storage %.0f B/point; process peak %.1f MiB, growth %.0f B/point\n",
-      dim, n, sim.mesh().cell_count(), sim.mesh().node_count(), threads, segments, steps, median,
-      rates.front(), rates.back(), static_cast<double>(sim.storage_bytes()) / n, peak / 1048576.0,
+      dim, n, sim.liquid().size(), sim.mesh().cell_count(), sim.mesh().node_count(), threads,
+      segments, steps, median, rates.front(), rates.back(),
+      static_cast<double>(sim.storage_bytes()) / n, peak / 1048576.0,
       static_cast<double>(peak - memory_before) / n);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  int dim = 2, segments = 5, steps = 50, threads = 1;
+  int dim = 2, segments = 5, steps = 50, threads = 1, water = 0;
   double cell = -1;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--dim"))
@@ -105,6 +129,8 @@ int main(int argc, char** argv) {
       steps = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--threads"))
       threads = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--water"))
+      water = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--cell"))
       cell = std::atof(argv[i + 1]);
     else {
@@ -113,8 +139,8 @@ int main(int argc, char** argv) {
     }
   }
   if (dim == 2)
-    run<2>(segments, steps, threads, cell > 0 ? cell : 0.005);
+    run<2>(segments, steps, threads, cell > 0 ? cell : 0.005, water != 0);
   else
-    run<3>(segments, steps, threads, cell > 0 ? cell : 0.02);
+    run<3>(segments, steps, threads, cell > 0 ? cell : 0.02, water != 0);
   return 0;
 }

@@ -43,9 +43,10 @@ std::filesystem::path run_scene(const CaseContext& context) {
   return case_folder;
 }
 
-std::vector<Frame> read_series(const std::filesystem::path& case_folder, const std::string& stage) {
+std::vector<Frame> read_series(const std::filesystem::path& case_folder, const std::string& stage,
+                               const std::string& kind) {
   std::vector<Frame> frames;
-  for (const auto& e : post::read_pvd(case_folder / "output" / (stage + "_points.pvd")))
+  for (const auto& e : post::read_pvd(case_folder / "output" / (stage + "_" + kind + ".pvd")))
     frames.push_back({e.time, e.file});
   return frames;
 }

@@ -51,7 +51,9 @@ struct Frame {
   double time = 0;
   std::filesystem::path file;
 };
-std::vector<Frame> read_series(const std::filesystem::path& case_folder, const std::string& stage);
+// `kind` is "points" (solid points), "liquid" (water points) or "grid".
+std::vector<Frame> read_series(const std::filesystem::path& case_folder, const std::string& stage,
+                               const std::string& kind = "points");
 // A point data array of a .vtu (tuples flattened) and its number of components.
 std::vector<double> read_point_array(const std::filesystem::path& vtu, const std::string& name,
                                      int& components);
@@ -67,5 +69,7 @@ void run_bar_vibration(const CaseContext& context, CaseResult& result);
 void run_sliding_block(const CaseContext& context, CaseResult& result);
 void run_gravity_column(const CaseContext& context, CaseResult& result);
 void run_case_a(const CaseContext& context, CaseResult& result);
+void run_hydrostatic_tank(const CaseContext& context, CaseResult& result);
+void run_dam_break(const CaseContext& context, CaseResult& result);
 
 }  // namespace lituya::verify

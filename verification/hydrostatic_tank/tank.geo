@@ -1,0 +1,21 @@
+// A 2D tank: [0, 1] x [0, 0.7]. Water fills [0, 1] x [0, 0.5]; "air" above is empty mesh.
+Point(1) = {0, 0, 0};
+Point(2) = {1, 0, 0};
+Point(3) = {1, 0.5, 0};
+Point(4) = {0, 0.5, 0};
+Point(5) = {1, 0.7, 0};
+Point(6) = {0, 0.7, 0};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Line(5) = {3, 5};
+Line(6) = {5, 6};
+Line(7) = {6, 4};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Curve Loop(2) = {-3, 5, 6, 7};
+Plane Surface(2) = {2};
+Physical Surface("water") = {1};
+Physical Surface("air") = {2};
+Physical Curve("walls") = {1, 2, 4, 5, 7};
