@@ -149,6 +149,12 @@ SolverSettings read_solver_settings(const TomlTable& t) {
   s.flip_fraction = t.number_in_or("flip_fraction", 0.0, 1.0, s.flip_fraction);
   s.max_velocity = t.number_in_or("max_velocity", 1e-9, 1e9, s.max_velocity);
   s.volumetric_smoothing = t.boolean_or("volumetric_smoothing", s.volumetric_smoothing);
+  const long long interval =
+      t.integer_or("pressure_projection_interval", s.pressure_projection_interval);
+  if (interval < 0 || interval > 1000000)
+    t.fail("'pressure_projection_interval' must be a number of steps in [0, 1000000] (0 = off)",
+           "pressure_projection_interval");
+  s.pressure_projection_interval = static_cast<int>(interval);
   t.finish();
   return s;
 }
@@ -229,7 +235,8 @@ toml::table to_toml(const SolverSettings& s) {
   return toml::table{{"scheme", s.scheme == TransferScheme::kMUSL ? "musl" : "usl"},
                      {"flip_fraction", s.flip_fraction},
                      {"max_velocity", s.max_velocity},
-                     {"volumetric_smoothing", s.volumetric_smoothing}};
+                     {"volumetric_smoothing", s.volumetric_smoothing},
+                     {"pressure_projection_interval", s.pressure_projection_interval}};
 }
 
 toml::table to_toml(const OutputSettings& o) {

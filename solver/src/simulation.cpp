@@ -403,7 +403,11 @@ void Simulation<dim>::step(double dt, double damping) {
   if (musl_) remap_momentum();
   if (volumetric_smoothing_) smooth_volumetric_strain(dt);
   update_stress_and_relocate(dt);
-  if (has_liquid_) update_liquid_and_relocate(dt);
+  if (has_liquid_) {
+    update_liquid_and_relocate(dt);
+    const int interval = description_.solver.pressure_projection_interval;
+    if (interval > 0 && (step_count_ + 1) % interval == 0) project_liquid_pressure();
+  }
   ++step_count_;
 }
 

@@ -78,6 +78,10 @@ struct SolverSettings {
   // FLIP transfer it feeds velocity noise (a sliding block then gains speed it should not,
   // see verification/sliding_block), so it is an experimental option for now.
   bool volumetric_smoothing = false;
+  // Every this many steps, the liquid point pressures are replaced by their L2 projection onto
+  // continuous linear fields (pressure_projection.cpp): removes the cell-to-cell pressure
+  // noise of linear cells, keeps linear (hydrostatic) fields exactly. 0 = never.
+  int pressure_projection_interval = 10;
 };
 
 struct OutputSettings {

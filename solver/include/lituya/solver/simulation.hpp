@@ -92,6 +92,8 @@ class Simulation {
   const std::vector<double>& node_pressure() const { return node_pressure_; }
   // Porosity of solid point p: 1 - m / (rho_s V), the Lagrangian form of eq. (5).
   double porosity(std::size_t p) const;
+  // Applies the liquid pressure projection now (pressure_projection.cpp); for tests.
+  int project_pressure_for_test() { return project_liquid_pressure(); }
   // Total number of points (solid + liquid), for throughput figures.
   std::size_t point_count() const { return points_.size() + liquid_.size(); }
   // Bytes held by points, nodes and mesh (for the memory-per-point report).
@@ -137,6 +139,10 @@ class Simulation {
   void liquid_nodes_to_points(double dt);
   void remap_liquid_momentum();
   void update_liquid_and_relocate(double dt);
+  // Pressure-projection stabilisation (pressure_projection.cpp); returns CG iterations.
+  int project_liquid_pressure();
+  void scatter_liquid(const std::vector<double>& point_values, std::vector<double>& nodal) const;
+  void gather_liquid(const std::vector<double>& nodal, std::vector<double>& point_values) const;
   void report_progress(const Stage& stage, double t, double wall, bool final_line);
 
   CaseDescription description_;
@@ -170,6 +176,11 @@ class Simulation {
   std::vector<double> node_pressure_;           // volume-weighted nodal liquid pressure
   std::vector<double> node_mesh_volume_;        // integral of N_i over the mesh (lumped volume)
   std::vector<double> liquid_flux_divergence_;  // per liquid point, div((1-n) v_s + n v_w)
+  struct ProjectionScratch {
+    std::vector<double> solution, rhs, diagonal, residual, preconditioned, direction, product;
+    std::vector<double> point_values;
+  };
+  ProjectionScratch projection_;
   int pore_liquid_ = -1;  // the water material that fills the pores (drag, eq. 23)
   long step_count_ = 0;
   double next_time_step_ = 0;  // stable dt from the last stress update (for courant 1)

@@ -1,0 +1,150 @@
+// Pressure-projection stabilisation of the liquid pressure.
+//
+// Why: the pressure update of eq. (8) uses one flux divergence per linear cell, i.e. linear
+// velocities with a pressure that is constant per cell (the P1/P0 pair). That pair is not
+// inf-sup stable: a cell-to-cell (checkerboard) pressure pattern exerts no nodal force, so
+// nothing in the equations removes it, and in violent flow it grows to a sizeable fraction of
+// rho_w g H (see verification/dam_break).
+//
+// What: every `pressure_projection_interval` steps, the point pressures are replaced by their
+// L2 projection onto the continuous piecewise-linear functions of the mesh, weighted by the
+// points' water volumes:
+//     find c (nodal values) with  M c = b,   M_ij = sum_q V_q N_i(x_q) N_j(x_q),
+//                                            b_i  = sum_q V_q N_i(x_q) p_q,
+//     then p_q <- sum_j N_j(x_q) c_j   (clipped at 0: no tension).
+// This is the idea of the polynomial pressure projection of Dohrmann and Bochev (2004),
+// applied as a periodic filter. Properties that matter here:
+// - it is an orthogonal projection in the V-weighted inner product, so it can only remove
+//   pressure "energy" sum V p^2 / 2K (dissipative, never pumps);
+// - it reproduces any linear field exactly, at the free surface and the walls too (unlike a
+//   lumped nodal average, which is one-sided there), so a hydrostatic tank is untouched;
+// - pressure variation below the mesh scale, which the P1 velocities cannot feel, is removed.
+// M is solved matrix-free by conjugate gradients with the lumped diagonal as preconditioner,
+// warm-started from the previous projection's nodal values (few iterations once the flow is
+// under way).
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "lituya/solver/simulation.hpp"
+
+namespace lituya::solver {
+
+template <int dim>
+void Simulation<dim>::scatter_liquid(const std::vector<double>& point_values,
+                                     std::vector<double>& nodal) const {
+  // nodal_i = sum_q V_q N_i(x_q) point_values_q
+  std::fill(nodal.begin(), nodal.end(), 0.0);
+  const std::size_t n_liquid = liquid_.size();
+  auto add = [&](std::size_t q, auto accumulate) {
+    const auto& nodes = mesh_.cell_nodes[liquid_.cell[q]];
+    const double w = liquid_.volume[q] * point_values[q];
+    for (int i = 0; i <= dim; ++i) accumulate(nodal[nodes[i]], liquid_shape_[q](i) * w);
+  };
+  if (threads_ == 1) {
+    for (std::size_t q = 0; q < n_liquid; ++q)
+      add(q, [](double& target, double value) { target += value; });
+  } else {
+#pragma omp parallel for num_threads(threads_) schedule(static)
+    for (std::size_t q = 0; q < n_liquid; ++q)
+      add(q, [](double& target, double value) {
+#pragma omp atomic
+        target += value;
+      });
+  }
+}
+
+template <int dim>
+void Simulation<dim>::gather_liquid(const std::vector<double>& nodal,
+                                    std::vector<double>& point_values) const {
+  const std::size_t n_liquid = liquid_.size();
+#pragma omp parallel for num_threads(threads_) schedule(static)
+  for (std::size_t q = 0; q < n_liquid; ++q) {
+    const auto& nodes = mesh_.cell_nodes[liquid_.cell[q]];
+    double value = 0;
+    for (int i = 0; i <= dim; ++i) value += liquid_shape_[q](i) * nodal[nodes[i]];
+    point_values[q] = value;
+  }
+}
+
+template <int dim>
+int Simulation<dim>::project_liquid_pressure() {
+  const std::size_t n_nodes = mesh_.node_count();
+  ProjectionScratch& s = projection_;
+  if (s.solution.size() != n_nodes) {
+    s.solution.assign(n_nodes, 0.0);
+    for (auto* v : {&s.rhs, &s.diagonal, &s.residual, &s.preconditioned, &s.direction, &s.product})
+      v->assign(n_nodes, 0.0);
+  }
+  s.point_values.resize(liquid_.size());
+  // Lumped diagonal (sum_q V_q N_i) and right-hand side.
+  std::fill(s.point_values.begin(), s.point_values.end(), 1.0);
+  scatter_liquid(s.point_values, s.diagonal);
+  scatter_liquid(liquid_.pressure, s.rhs);
+  auto apply = [&](const std::vector<double>& x, std::vector<double>& y) {
+    gather_liquid(x, s.point_values);
+    scatter_liquid(s.point_values, y);
+    // A node carried by almost no water: keep its equation well posed (its value hardly
+    // matters to any point).
+    for (std::size_t i = 0; i < n_nodes; ++i) y[i] += 1e-12 * s.diagonal[i] * x[i];
+  };
+  // Warm start: previous nodal values where the node still carries water, else the lumped
+  // average.
+  for (std::size_t i = 0; i < n_nodes; ++i)
+    if (s.diagonal[i] <= 0)
+      s.solution[i] = 0;
+    else if (s.solution[i] == 0)
+      s.solution[i] = s.rhs[i] / s.diagonal[i];
+  apply(s.solution, s.product);
+  double rz = 0, rhs_norm = 0;
+  for (std::size_t i = 0; i < n_nodes; ++i) {
+    s.residual[i] = s.rhs[i] - s.product[i];
+    s.preconditioned[i] = s.diagonal[i] > 0 ? s.residual[i] / s.diagonal[i] : 0.0;
+    s.direction[i] = s.preconditioned[i];
+    rz += s.residual[i] * s.preconditioned[i];
+    rhs_norm += s.rhs[i] * s.rhs[i];
+  }
+  const double tolerance = 1e-16 * rhs_norm;  // relative residual 1e-8
+  int iteration = 0;
+  for (; iteration < 200; ++iteration) {
+    double rr = 0;
+    for (std::size_t i = 0; i < n_nodes; ++i) rr += s.residual[i] * s.residual[i];
+    if (rr <= tolerance) break;
+    apply(s.direction, s.product);
+    double pap = 0;
+    for (std::size_t i = 0; i < n_nodes; ++i) pap += s.direction[i] * s.product[i];
+    if (!(pap > 0)) break;
+    const double alpha = rz / pap;
+    double rz_new = 0;
+    for (std::size_t i = 0; i < n_nodes; ++i) {
+      s.solution[i] += alpha * s.direction[i];
+      s.residual[i] -= alpha * s.product[i];
+      s.preconditioned[i] = s.diagonal[i] > 0 ? s.residual[i] / s.diagonal[i] : 0.0;
+      rz_new += s.residual[i] * s.preconditioned[i];
+    }
+    const double beta = rz_new / rz;
+    rz = rz_new;
+    for (std::size_t i = 0; i < n_nodes; ++i)
+      s.direction[i] = s.preconditioned[i] + beta * s.direction[i];
+  }
+  gather_liquid(s.solution, s.point_values);
+  const std::size_t n_liquid = liquid_.size();
+#pragma omp parallel for num_threads(threads_) schedule(static)
+  for (std::size_t q = 0; q < n_liquid; ++q) {
+    const MaterialModelData& water = materials_[liquid_.material[q]];
+    liquid_.pressure[q] = std::max(0.0, s.point_values[q]);
+    liquid_.volume[q] =
+        liquid_.mass[q] / (water.liquid_density * (1.0 + liquid_.pressure[q] / water.bulk_modulus));
+  }
+  return iteration;
+}
+
+template void Simulation<2>::scatter_liquid(const std::vector<double>&, std::vector<double>&) const;
+template void Simulation<3>::scatter_liquid(const std::vector<double>&, std::vector<double>&) const;
+template void Simulation<2>::gather_liquid(const std::vector<double>&, std::vector<double>&) const;
+template void Simulation<3>::gather_liquid(const std::vector<double>&, std::vector<double>&) const;
+template int Simulation<2>::project_liquid_pressure();
+template int Simulation<3>::project_liquid_pressure();
+
+}  // namespace lituya::solver
