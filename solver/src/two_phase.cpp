@@ -28,19 +28,13 @@
 //       (1-n) div v_s + n div v_w + (v_w - v_s).grad n = div((1-n) v_s + n v_w),
 //   evaluated with the nodal flux q_i = (1-n_i) v_s,i + n_i v_w,i (exactly eq. 8, with the
 //   porosity-gradient term included), and dp = -(K_w / n) div q dt (p compression positive).
-//   KNOWN LIMITATION: linear velocity with one pressure per cell is the P1/P0 pair, which is
-//   not inf-sup stable: a cell-to-cell (checkerboard) pressure pattern exerts no nodal force,
-//   so nothing removes it. At rest it stays at a few per cent of rho_w g depth; in a dam break
-//   it grows to about a quarter of rho_w g H. Averaging the divergence at the nodes removes
-//   it but, unless the pressure force is built from the same nodal field, pumps energy into
-//   a FLIP run (tried: a saturated bed at rest gained two orders of kinetic energy in 0.1 s);
-//   with a matching nodal force it still drifted. A pressure-projection stabilisation (L2
-//   projection onto continuous P1, which keeps hydrostatic fields at boundaries) is the next
-//   step. Bulk viscosity (alpha rho c h div v) was tried and does not touch it (the mode
-//   carries no velocity); neither does starting each point from its cell's mean pressure
-//   (10 % less noise in the dam break, but a hydrostatic tank's point pressures get worse,
-//   1.5 % -> 2.3 % of rho_w g H, since the exact field varies within a cell). p >=
-//   0: water does not take tension, which is what makes a free surface free.
+//   Linear velocity with one pressure per cell is the P1/P0 pair, which is not inf-sup
+//   stable: a cell-to-cell (checkerboard) pressure pattern exerts no nodal force, so nothing
+//   here removes it. pressure_projection.cpp does, every few steps. Tried before that and
+//   rejected: averaging the divergence at the nodes (pumps energy into a FLIP run unless the
+//   force is built from the same nodal field, and then still drifts), starting each point from
+//   its cell's mean pressure (worse at rest: the exact field varies within a cell), and a
+//   bulk viscosity alpha rho c h div v (does not act on a mode that carries no velocity).
 #include <omp.h>
 
 #include <Eigen/Dense>
