@@ -28,6 +28,7 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
   using Vec = Eigen::Matrix<double, dim, 1>;
   NodalConstraint<dim> constraint;
   constraint.type = bc.type;
+  constraint.phase = bc.phase;
   constraint.friction = bc.friction;
   constraint.directions = bc.directions;
   if (facets.empty())
@@ -39,10 +40,18 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
   for (std::size_t c = 0; c < mesh.cell_count(); ++c)
     for (int n : mesh.cell_nodes[c]) cells_of_node[n].push_back(static_cast<int>(c));
 
-  std::unordered_map<int, Vec> normal_sum;
+  std::unordered_map<int, Vec> normal_sum, force_sum;
   std::vector<int> order;
+  Vec traction = Vec::Zero();
+  for (std::size_t d = 0; d < bc.traction.size() && d < dim; ++d) traction(d) = bc.traction[d];
   for (const auto& facet : facets) {
     Vec normal = facet_normal(mesh, facet);
+    // A linear facet shares its integral of N t equally between its dim nodes.
+    const Vec facet_force = traction * normal.norm() / dim;
+    for (int n : facet) {
+      auto [it, inserted] = force_sum.try_emplace(n, Vec::Zero());
+      it->second += facet_force;
+    }
     std::vector<int> adjacent;
     for (int c : cells_of_node[facet[0]]) {
       bool has_all = true;
@@ -76,6 +85,7 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
   for (int n : order) {
     constraint.nodes.push_back(n);
     constraint.normal.push_back(normal_sum[n].normalized());
+    if (bc.type == BoundaryType::kTraction) constraint.force.push_back(force_sum[n]);
   }
   return constraint;
 }
@@ -114,6 +124,8 @@ void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
             const double reduction = c->friction * approach;
             v = slip > reduction ? Vec(tangential * (1.0 - reduction / slip)) : Vec::Zero();
           }
+          break;
+        case BoundaryType::kTraction:
           break;
       }
     }

@@ -94,11 +94,26 @@ BoundaryCondition read_boundary(const TomlTable& t, int dimension) {
   BoundaryCondition b;
   b.group = t.string("group");
   b.name = t.string_or("name", b.group);
-  std::string type = t.choice("type", {"fixed", "roller", "contact", "fixity"});
+  std::string type = t.choice("type", {"fixed", "roller", "contact", "fixity", "traction"});
   b.type = type == "fixed"     ? BoundaryType::kFixed
            : type == "roller"  ? BoundaryType::kRoller
            : type == "contact" ? BoundaryType::kContact
-                               : BoundaryType::kFixity;
+           : type == "fixity"  ? BoundaryType::kFixity
+                               : BoundaryType::kTraction;
+  if (b.type == BoundaryType::kTraction) {
+    b.traction = t.numbers("traction");
+    if (static_cast<int>(b.traction.size()) != dimension)
+      t.fail("'traction' must have " + std::to_string(dimension) + " components (Pa)", "traction");
+    b.phase = t.choice_or("phase", {"solid", "liquid"}, "solid") == "solid"
+                  ? BoundaryPhase::kSolid
+                  : BoundaryPhase::kLiquid;
+  } else {
+    if (t.has("traction")) t.fail("'traction' applies only to type = \"traction\"", "traction");
+    const std::string phase = t.choice_or("phase", {"both", "solid", "liquid"}, "both");
+    b.phase = phase == "both"    ? BoundaryPhase::kBoth
+              : phase == "solid" ? BoundaryPhase::kSolid
+                                 : BoundaryPhase::kLiquid;
+  }
   if (b.type == BoundaryType::kContact)
     b.friction = t.number_in_or("friction", 0.0, 10.0, 0.0);
   else if (t.has("friction"))
@@ -205,8 +220,15 @@ toml::table to_toml(const Material& m) {
 }
 
 toml::table to_toml(const BoundaryCondition& b) {
-  static const char* names[] = {"fixed", "roller", "contact", "fixity"};
+  static const char* names[] = {"fixed", "roller", "contact", "fixity", "traction"};
+  static const char* phases[] = {"both", "solid", "liquid"};
   toml::table t{{"name", b.name}, {"group", b.group}, {"type", names[static_cast<int>(b.type)]}};
+  if (b.type == BoundaryType::kTraction) {
+    toml::array a;
+    for (double v : b.traction) a.push_back(v);
+    t.insert("traction", a);
+  }
+  if (b.phase != BoundaryPhase::kBoth) t.insert("phase", phases[static_cast<int>(b.phase)]);
   if (b.type == BoundaryType::kContact) t.insert("friction", b.friction);
   if (b.type == BoundaryType::kFixity) {
     toml::array a;

@@ -122,9 +122,33 @@ void Simulation<dim>::set_threads(int threads) {
 template <int dim>
 void Simulation<dim>::activate_boundaries(const std::vector<std::string>& names) {
   active_constraints_.clear();
+  active_liquid_constraints_.clear();
+  active_tractions_.clear();
   for (const std::string& name : names)
-    for (std::size_t i = 0; i < description_.boundaries.size(); ++i)
-      if (description_.boundaries[i].name == name) active_constraints_.push_back(&constraints_[i]);
+    for (std::size_t i = 0; i < description_.boundaries.size(); ++i) {
+      if (description_.boundaries[i].name != name) continue;
+      const NodalConstraint<dim>* c = &constraints_[i];
+      if (c->type == BoundaryType::kTraction)
+        active_tractions_.push_back(c);
+      else {
+        if (c->phase != BoundaryPhase::kLiquid) active_constraints_.push_back(c);
+        if (c->phase != BoundaryPhase::kSolid) active_liquid_constraints_.push_back(c);
+      }
+    }
+}
+
+template <int dim>
+void Simulation<dim>::apply_tractions() {
+  // Surface loads: nodal forces on the loaded phase, where that phase has mass (a load on
+  // empty space acts on nothing).
+  for (const NodalConstraint<dim>* c : active_tractions_) {
+    const bool liquid = c->phase == BoundaryPhase::kLiquid;
+    if (liquid && !has_liquid_) continue;
+    std::vector<double>& mass = liquid ? liquid_grid_.mass : grid_.mass;
+    std::vector<Vec>& force = liquid ? liquid_grid_.force : grid_.force;
+    for (std::size_t k = 0; k < c->nodes.size(); ++k)
+      if (mass[c->nodes[k]] > kMassFloor) force[c->nodes[k]] += c->force[k];
+  }
 }
 
 template <int dim>
@@ -397,6 +421,7 @@ template <int dim>
 void Simulation<dim>::step(double dt, double damping) {
   points_to_nodes(Transfer::kMassMomentumForce);
   if (has_liquid_) liquid_to_nodes(Transfer::kMassMomentumForce);
+  if (!active_tractions_.empty()) apply_tractions();
   nodal_update(dt, damping);
   nodes_to_points(dt);
   if (has_liquid_) liquid_nodes_to_points(dt);

@@ -320,7 +320,7 @@ void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
     node_liquid_acceleration_[i] = vw_old;
   }
   apply_constraints<dim>(active_constraints_, node_velocity_);
-  apply_constraints<dim>(active_constraints_, node_liquid_velocity_);
+  apply_constraints<dim>(active_liquid_constraints_, node_liquid_velocity_);
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i) {
     node_acceleration_[i] = (node_velocity_[i] - node_acceleration_[i]) / dt;
@@ -358,7 +358,7 @@ void Simulation<dim>::remap_liquid_momentum() {
                : node_velocity_[i];
     if (grid_.mass[i] <= kMassFloor && liquid) node_velocity_[i] = node_liquid_velocity_[i];
   }
-  apply_constraints<dim>(active_constraints_, node_liquid_velocity_);
+  apply_constraints<dim>(active_liquid_constraints_, node_liquid_velocity_);
   apply_constraints<dim>(active_constraints_, node_velocity_);
 }
 

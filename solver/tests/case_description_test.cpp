@@ -164,3 +164,65 @@ TEST(CaseDescription, WaterErrorsNameFileAndLine) {
 }
 
 }  // namespace
+
+namespace {
+
+std::string error_reading_boundary(const std::string& body, int dimension) {
+  auto path = std::filesystem::temp_directory_path() / "lituya_boundary_test.toml";
+  std::ofstream(path) << body;
+  lituya::TomlDocument doc(path);
+  try {
+    read_boundary(doc.root().tables("boundary").at(0), dimension);
+  } catch (const lituya::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CaseDescription, TractionAndPhaseBoundaries) {
+  auto path = std::filesystem::temp_directory_path() / "lituya_traction_ok.toml";
+  std::ofstream(path) << "[[boundary]]\ngroup = \"top\"\ntype = \"traction\"\n"
+                         "traction = [0.0, -1.0e4]\n\n"
+                         "[[boundary]]\ngroup = \"plate\"\ntype = \"fixed\"\nphase = \"solid\"\n";
+  lituya::TomlDocument doc(path);
+  auto tables = doc.root().tables("boundary");
+  BoundaryCondition load = read_boundary(tables.at(0), 2);
+  EXPECT_EQ(load.type, BoundaryType::kTraction);
+  EXPECT_EQ(load.phase, BoundaryPhase::kSolid);  // a load acts on the skeleton by default
+  EXPECT_DOUBLE_EQ(load.traction.at(1), -1.0e4);
+  BoundaryCondition plate = read_boundary(tables.at(1), 2);
+  EXPECT_EQ(plate.phase, BoundaryPhase::kSolid);
+  // Written and read back.
+  auto back = std::filesystem::temp_directory_path() / "lituya_traction_back.toml";
+  toml::table root;
+  toml::array list;
+  list.push_back(to_toml(load));
+  list.push_back(to_toml(plate));
+  root.insert("boundary", list);
+  std::ofstream(back) << root;
+  lituya::TomlDocument doc2(back);
+  EXPECT_DOUBLE_EQ(read_boundary(doc2.root().tables("boundary").at(0), 2).traction.at(1), -1.0e4);
+  EXPECT_EQ(read_boundary(doc2.root().tables("boundary").at(1), 2).phase, BoundaryPhase::kSolid);
+}
+
+TEST(CaseDescription, TractionErrorsNameTheLine) {
+  // Three components in 2D.
+  std::string msg = error_reading_boundary(
+      "[[boundary]]\ngroup = \"top\"\ntype = \"traction\"\ntraction = [0.0, 1.0, 2.0]\n", 2);
+  EXPECT_NE(msg.find(":4"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("2 components"), std::string::npos) << msg;
+  // A traction on a fixed boundary, and "both" on a traction.
+  msg = error_reading_boundary(
+      "[[boundary]]\ngroup = \"b\"\ntype = \"fixed\"\ntraction = [0.0, 1.0]\n", 2);
+  EXPECT_NE(msg.find(":4"), std::string::npos) << msg;
+  msg = error_reading_boundary(
+      "[[boundary]]\ngroup = \"b\"\ntype = \"traction\"\ntraction = [0.0, 1.0]\n"
+      "phase = \"both\"\n",
+      2);
+  EXPECT_NE(msg.find(":5"), std::string::npos) << msg;
+  // A traction without its vector.
+  msg = error_reading_boundary("[[boundary]]\ngroup = \"b\"\ntype = \"traction\"\n", 2);
+  EXPECT_NE(msg.find("traction"), std::string::npos) << msg;
+}
+
+}  // namespace

@@ -295,3 +295,67 @@ TEST(Simulation, UnstableRunStopsWithDiagnostic) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Simulation, SurfaceTractionCompressesAnElasticColumnOedometrically) {
+  // An elastic column 1 m high between rollers, no gravity, loaded on top by q = 10 kPa
+  // (type "traction") and damped to rest: the top settles q H / M, M the oedometric modulus
+  // (1D, nu = 0.3: M = 1.346 E). Tolerance 2 %: the damped run stops near rest, not at it. The
+  // top settlement is read from the points of the top cell row, scaled by H / y0 (uniform
+  // strain: the displacement grows linearly from the fixed base).
+  BoxScene<2> scene;
+  scene.domain_size = {0.1, 1.2};
+  scene.cells = {2, 24};
+  scene.block_max = {0.1, 1.0};
+  scene.material = elastic_material(1500.0, 1.0e6, 0.3);
+  scene.gravity = {0.0, 0.0};
+  BoundaryCondition load;
+  load.type = BoundaryType::kTraction;
+  load.phase = BoundaryPhase::kSolid;
+  load.traction = {0.0, -1.0e4};
+  load.name = "load";
+  scene.boundaries = {{"x-", condition(BoundaryType::kRoller)},
+                      {"x+", condition(BoundaryType::kRoller)},
+                      {"y-", condition(BoundaryType::kFixed)}};
+  Simulation<2> sim = make_box_simulation<2>(scene);
+  // The load acts on the nodes of the column's top (y = 1), an interior line of the box mesh.
+  // Build it as a traction constraint on those facets.
+  auto facets = std::vector<std::array<int, 2>>{};
+  const auto& mesh = sim.mesh();
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c)
+    for (int i = 0; i < 3; ++i) {
+      std::array<int, 2> f;
+      bool top = true;
+      for (int k = 0, j = 0; k < 3; ++k)
+        if (k != i) {
+          f[j++] = mesh.cell_nodes[c][k];
+          top = top && std::abs(mesh.node_position[mesh.cell_nodes[c][k]](1) - 1.0) < 1e-9;
+        }
+      // Each interior facet appears in two cells; keep it once (from the cell below).
+      Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+      for (int n : mesh.cell_nodes[c]) centroid += mesh.node_position[n] / 3;
+      if (top && centroid(1) < 1.0) facets.push_back(f);
+    }
+  ASSERT_EQ(facets.size(), 2u);
+  sim.add_constraint_for_test(make_constraint<2>(load, facets, mesh, "test"), load);
+  Stage stage = dynamic_stage(3.0);
+  stage.type = StageType::kQuasiStatic;
+  stage.damping = 0.7;
+  stage.reset_displacement = false;  // the settlement is the answer
+  stage.boundaries = {"x-", "x+", "y-", "load"};
+  sim.run_stage(stage, nullptr);
+  const double oedometric = 1.0e6 * 0.7 / (1.3 * 0.4);
+  double settlement = 0;
+  int count = 0;
+  for (std::size_t p = 0; p < sim.points().size(); ++p)
+    if (const double y0 = sim.points().position[p](1) - sim.points().displacement[p](1);
+        y0 > 0.95) {
+      settlement -= sim.points().displacement[p](1) * 1.0 / y0;
+      ++count;
+    }
+  ASSERT_GT(count, 0);
+  EXPECT_NEAR(settlement / count / (1.0e4 * 1.0 / oedometric), 1.0, 0.02);
+}
+
+}  // namespace

@@ -69,7 +69,10 @@ void run_bar_vibration(const CaseContext& context, CaseResult& result);
 void run_sliding_block(const CaseContext& context, CaseResult& result);
 void run_gravity_column(const CaseContext& context, CaseResult& result);
 void run_case_a(const CaseContext& context, CaseResult& result);
+void run_case_b(const CaseContext& context, CaseResult& result);
+void run_case_c(const CaseContext& context, CaseResult& result);
 void run_hydrostatic_tank(const CaseContext& context, CaseResult& result);
 void run_dam_break(const CaseContext& context, CaseResult& result);
+void run_terzaghi(const CaseContext& context, CaseResult& result);
 
 }  // namespace lituya::verify

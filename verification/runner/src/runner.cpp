@@ -28,8 +28,11 @@ const std::vector<CaseEntry>& all_cases() {
       {"sliding_block", "Block sliding on a rigid incline", run_sliding_block},
       {"gravity_column", "Gravity loading of a soil column", run_gravity_column},
       {"case_a", "Case A: granular collapse on an erodible 22 degree slope", run_case_a},
+      {"case_b", "Case B: dry granular slide into water down a 45 degree slope", run_case_b},
+      {"case_c", "Case C: dry and saturated slides on rigid and erodible slopes", run_case_c},
       {"hydrostatic_tank", "Hydrostatic tank: still water stays still", run_hydrostatic_tank},
       {"dam_break", "Dam break on a dry bed against Ritter's solution", run_dam_break},
+      {"terzaghi", "Terzaghi 1D consolidation", run_terzaghi},
   };
   return cases;
 }

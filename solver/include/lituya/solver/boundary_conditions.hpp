@@ -18,10 +18,12 @@ template <int dim>
 struct NodalConstraint {
   using Vec = Eigen::Matrix<double, dim, 1>;
   BoundaryType type = BoundaryType::kFixed;
+  BoundaryPhase phase = BoundaryPhase::kBoth;
   double friction = 0;
   std::vector<int> directions;  // fixity
   std::vector<int> nodes;
   std::vector<Vec> normal;  // per node: unit outward normal of the group's facets
+  std::vector<Vec> force;   // traction only: per node, the integral of N t over the facets (N)
 };
 
 // Builds the node set and outward normals of one boundary condition from its group's facets.
@@ -33,7 +35,7 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
                                      const Mesh<dim>& mesh, const std::string& file);
 
 // Applies the active constraints to nodal velocities (twice over, so that a node on two
-// non-orthogonal walls satisfies both).
+// non-orthogonal walls satisfies both). Tractions are skipped (they are forces).
 template <int dim>
 void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
                        std::vector<Eigen::Matrix<double, dim, 1>>& velocity);

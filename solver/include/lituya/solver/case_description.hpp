@@ -42,14 +42,22 @@ struct Material {
   double dry_density() const { return (1.0 - porosity) * solid_density; }
 };
 
-enum class BoundaryType { kFixed, kRoller, kContact, kFixity };
+// kTraction is a surface load (a force per unit area on the group's facets), the others
+// constrain nodal velocities.
+enum class BoundaryType { kFixed, kRoller, kContact, kFixity, kTraction };
+
+// Which phase a boundary condition acts on (two-phase cases): a perforated plate holds the
+// soil and lets the water through (kSolid), a membrane the other way round (kLiquid).
+enum class BoundaryPhase { kBoth, kSolid, kLiquid };
 
 struct BoundaryCondition {
   std::string name;
   std::string group;
   BoundaryType type = BoundaryType::kFixed;
-  double friction = 0;          // contact only
-  std::vector<int> directions;  // fixity only: 0 = x, 1 = y, 2 = z
+  double friction = 0;                         // contact only
+  std::vector<int> directions;                 // fixity only: 0 = x, 1 = y, 2 = z
+  std::vector<double> traction;                // traction only: Pa, `dimension` components
+  BoundaryPhase phase = BoundaryPhase::kBoth;  // traction: kSolid (default) or kLiquid
 };
 
 enum class StageType { kQuasiStatic, kDynamic };

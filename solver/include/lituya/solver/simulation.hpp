@@ -92,6 +92,11 @@ class Simulation {
   const std::vector<double>& node_pressure() const { return node_pressure_; }
   // Porosity of solid point p: 1 - m / (rho_s V), the Lagrangian form of eq. (5).
   double porosity(std::size_t p) const;
+  // Adds a boundary condition built in code (tests of scenes without gmsh groups).
+  void add_constraint_for_test(NodalConstraint<dim> constraint, const BoundaryCondition& bc) {
+    description_.boundaries.push_back(bc);
+    constraints_.push_back(std::move(constraint));
+  }
   // Applies the liquid pressure projection now (pressure_projection.cpp); for tests.
   int project_pressure_for_test() { return project_liquid_pressure(); }
   // Total number of points (solid + liquid), for throughput figures.
@@ -150,7 +155,10 @@ class Simulation {
   MaterialPoints<dim> points_;
   std::vector<Shape> shape_;  // shape values of each point in its cell
   std::vector<NodalConstraint<dim>> constraints_;
-  std::vector<const NodalConstraint<dim>*> active_constraints_;
+  // Active velocity constraints acting on the solid and on the liquid nodes, and tractions.
+  std::vector<const NodalConstraint<dim>*> active_constraints_, active_liquid_constraints_;
+  std::vector<const NodalConstraint<dim>*> active_tractions_;
+  void apply_tractions();
   std::vector<MaterialModelData> materials_;
   Vec gravity_;
   int threads_ = 1;
