@@ -74,5 +74,6 @@ void run_case_c(const CaseContext& context, CaseResult& result);
 void run_hydrostatic_tank(const CaseContext& context, CaseResult& result);
 void run_dam_break(const CaseContext& context, CaseResult& result);
 void run_terzaghi(const CaseContext& context, CaseResult& result);
+void run_seepage(const CaseContext& context, CaseResult& result);
 
 }  // namespace lituya::verify

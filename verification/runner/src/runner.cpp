@@ -33,6 +33,7 @@ const std::vector<CaseEntry>& all_cases() {
       {"hydrostatic_tank", "Hydrostatic tank: still water stays still", run_hydrostatic_tank},
       {"dam_break", "Dam break on a dry bed against Ritter's solution", run_dam_break},
       {"terzaghi", "Terzaghi 1D consolidation", run_terzaghi},
+      {"seepage", "Seepage through a sand column (Darcy-Forchheimer)", run_seepage},
   };
   return cases;
 }
