@@ -1,0 +1,87 @@
+#pragma once
+// What a sweep plots against its parameter: one number per run, read from the CSV tables
+// that `lituya post` wrote into the run's case/post folder.
+//
+//   gauge_max[:GAUGE]          highest eta at the gauge over the run (gauges.csv)
+//   gauge_first_crest[:GAUGE]  height of the first wave crest at the gauge (gauges.csv; the
+//                              rule is first_crest() below)
+//   leading_wave_max           highest crest_height of the leading wave (leading_wave.csv)
+//   front_travel_final         front_travel at the last output (runout.csv)
+//   front_travel_max           highest front_travel (runout.csv)
+//   wall_height_final          wall_height at the last output (wall_height.csv)
+//   wall_height_max            highest wall_height (wall_height.csv)
+//
+// A gauge measure without :GAUGE stands for one measure per gauge of the scene. All measures
+// are lengths in m. A measure without a value (no water ever reached the gauge, no crest, a
+// blank last row) is NaN, a blank cell in sweep.csv.
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace lituya::sweep {
+
+enum class Reduction { kLast, kMax, kFirstCrest };
+
+struct Measure {
+  std::string name;    // the sweep.csv column, e.g. "gauge_first_crest:G1"
+  std::string csv;     // the file in the post folder, e.g. "gauges.csv"
+  std::string column;  // its column, e.g. "G1"
+  Reduction reduction = Reduction::kLast;
+};
+
+// What the scene's [post] table asks `lituya post` to write.
+struct PostContent {
+  bool present = false;                  // the scene has a [post] table
+  int line = 0;                          // of [post]
+  std::vector<std::string> gauge_names;  // gauge_names, or the defaults "x=<gauges[i]>"
+  bool slide = false;                    // track_materials names a material
+  bool leading_wave = false;
+};
+PostContent post_content(const toml::table& scene);
+
+// The measure names a user may give, for messages.
+std::string measure_list();
+
+// Expands and checks the measures given by the user (each "KIND" or "KIND:GAUGE") against the
+// scene's [post]. InputError naming `scene_file` when a measure needs a table the scene does
+// not ask for, or a gauge it does not have; an unknown KIND is an InputError naming
+// --measure.
+std::vector<Measure> parse_measures(const std::vector<std::string>& specs, const PostContent& post,
+                                    const std::string& scene_file);
+
+// The measures taken when none is given: gauge_first_crest at every gauge when the scene has
+// gauges, else front_travel_final when it tracks a slide, else leading_wave_max when it
+// follows the leading wave, else none.
+std::vector<Measure> default_measures(const PostContent& post);
+
+// A CSV table as `lituya post` writes it: a header line, then numbers; a blank field is NaN.
+struct CsvTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+  // The values of `name`; InputError naming `file` when there is no such column.
+  std::vector<double> column(const std::string& name, const std::string& file) const;
+};
+CsvTable read_csv(const std::filesystem::path& file);
+
+// The first wave crest of a gauge record eta(t); samples with NaN eta (no water at the gauge)
+// are left out. With eta_max the highest eta of the record, a crest is a sample whose eta
+// exceeds max(1 mm, 10 % of eta_max) and is at least as high as every sample within
+// 2 samples on either side (so a wiggle on the rising flank of the wave is not a crest).
+// The first crest is the earliest. NaN time and height when there is none (the water never
+// rose more than 1 mm).
+struct Crest {
+  double time = NAN, height = NAN;
+};
+inline constexpr double kCrestFloor = 0.001;   // m
+inline constexpr double kCrestFraction = 0.1;  // of the record's highest eta
+inline constexpr int kCrestHalfWindow = 2;     // samples on either side
+Crest first_crest(const std::vector<double>& time, const std::vector<double>& eta);
+
+// The measure's value for the run whose post folder is `post_folder`. InputError naming the
+// file when the table or its column is missing.
+double take_measure(const Measure& measure, const std::filesystem::path& post_folder);
+
+}  // namespace lituya::sweep

@@ -1,0 +1,242 @@
+#include "lituya/sweep/measures.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "lituya/common/input_error.hpp"
+
+namespace lituya::sweep {
+
+namespace {
+
+struct Kind {
+  const char* name;
+  const char* csv;
+  const char* column;  // nullptr: the gauge's name
+  Reduction reduction;
+  enum Needs { kGauges, kSlide, kLeadingWave } needs;
+};
+
+constexpr Kind kKinds[] = {
+    {"gauge_max", "gauges.csv", nullptr, Reduction::kMax, Kind::kGauges},
+    {"gauge_first_crest", "gauges.csv", nullptr, Reduction::kFirstCrest, Kind::kGauges},
+    {"leading_wave_max", "leading_wave.csv", "crest_height", Reduction::kMax, Kind::kLeadingWave},
+    {"front_travel_final", "runout.csv", "front_travel", Reduction::kLast, Kind::kSlide},
+    {"front_travel_max", "runout.csv", "front_travel", Reduction::kMax, Kind::kSlide},
+    {"wall_height_final", "wall_height.csv", "wall_height", Reduction::kLast, Kind::kSlide},
+    {"wall_height_max", "wall_height.csv", "wall_height", Reduction::kMax, Kind::kSlide},
+};
+
+std::string trim(const std::string& s, const char* blanks = " \t\r") {
+  const size_t b = s.find_first_not_of(blanks);
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(blanks) - b + 1);
+}
+
+std::string quoted_list(const std::vector<std::string>& items) {
+  std::string list;
+  for (const std::string& item : items) list += (list.empty() ? "\"" : ", \"") + item + "\"";
+  return list;
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::istringstream in(line);
+  while (std::getline(in, field, ',')) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.emplace_back();
+  return fields;
+}
+
+}  // namespace
+
+PostContent post_content(const toml::table& scene) {
+  PostContent content;
+  const toml::table* post = scene.get_as<toml::table>("post");
+  if (!post) return content;
+  content.present = true;
+  content.line = static_cast<int>(post->source().begin.line);
+  if (const toml::array* gauges = post->get_as<toml::array>("gauges")) {
+    const toml::array* names = post->get_as<toml::array>("gauge_names");
+    for (size_t i = 0; i < gauges->size(); ++i) {
+      std::optional<std::string> name;
+      if (names && i < names->size()) name = names->get(i)->value<std::string>();
+      if (!name) {
+        char text[64];
+        std::snprintf(text, sizeof text, "x=%g", gauges->get(i)->value<double>().value_or(NAN));
+        name = text;
+      }
+      content.gauge_names.push_back(*name);
+    }
+  }
+  if (const toml::array* track = post->get_as<toml::array>("track_materials"))
+    content.slide = !track->empty();
+  content.leading_wave = post->get("leading_wave") && post->get("leading_wave")->value_or(false);
+  return content;
+}
+
+std::string measure_list() {
+  std::string list;
+  for (const Kind& k : kKinds)
+    list += (list.empty() ? "" : ", ") + std::string(k.name) + (k.column ? "" : "[:GAUGE]");
+  return list;
+}
+
+std::vector<Measure> parse_measures(const std::vector<std::string>& specs, const PostContent& post,
+                                    const std::string& scene_file) {
+  std::vector<Measure> measures;
+  for (const std::string& raw : specs) {
+    const std::string spec = trim(raw);
+    const size_t colon = spec.find(':');
+    const std::string name = spec.substr(0, colon);
+    const Kind* kind = nullptr;
+    for (const Kind& k : kKinds)
+      if (name == k.name) kind = &k;
+    if (!kind || (colon != std::string::npos && kind->column))
+      throw InputError("--measure", 0,
+                       "unknown measure '" + spec + "'; the measures are: " + measure_list());
+    auto need = [&](bool has, const std::string& what) {
+      if (!post.present)
+        throw InputError(scene_file, 0,
+                         "measure '" + spec +
+                             "' is read from the tables of `lituya post`, but the scene has no "
+                             "[post] table (add one that asks for " +
+                             what + ")");
+      if (!has)
+        throw InputError(scene_file, post.line,
+                         "measure '" + spec + "' needs " + what + " in the scene's [post] table");
+    };
+    switch (kind->needs) {
+      case Kind::kGauges:
+        need(!post.gauge_names.empty(), "gauges");
+        break;
+      case Kind::kSlide:
+        need(post.slide, "track_materials");
+        break;
+      case Kind::kLeadingWave:
+        need(post.leading_wave, "leading_wave = true");
+        break;
+    }
+    if (kind->column) {
+      measures.push_back({kind->name, kind->csv, kind->column, kind->reduction});
+      continue;
+    }
+    std::vector<std::string> gauges = post.gauge_names;
+    if (colon != std::string::npos) {
+      const std::string gauge = spec.substr(colon + 1);
+      if (std::find(gauges.begin(), gauges.end(), gauge) == gauges.end())
+        throw InputError(scene_file, post.line,
+                         "measure '" + spec + "': the scene's [post] has no gauge \"" + gauge +
+                             "\" (its gauges: " + quoted_list(gauges) + ")");
+      gauges = {gauge};
+    }
+    for (const std::string& g : gauges)
+      measures.push_back({std::string(kind->name) + ":" + g, kind->csv, g, kind->reduction});
+  }
+  // The same measure asked for twice is one column.
+  std::vector<Measure> unique;
+  for (const Measure& m : measures)
+    if (std::none_of(unique.begin(), unique.end(), [&](auto& u) { return u.name == m.name; }))
+      unique.push_back(m);
+  return unique;
+}
+
+std::vector<Measure> default_measures(const PostContent& post) {
+  if (!post.gauge_names.empty()) return parse_measures({"gauge_first_crest"}, post, "");
+  if (post.slide) return parse_measures({"front_travel_final"}, post, "");
+  if (post.leading_wave) return parse_measures({"leading_wave_max"}, post, "");
+  return {};
+}
+
+std::vector<double> CsvTable::column(const std::string& name, const std::string& file) const {
+  const auto it = std::find(header.begin(), header.end(), name);
+  if (it == header.end())
+    throw InputError(file, 1,
+                     "no column '" + name + "' (the columns: " + quoted_list(header) + ")");
+  const size_t c = static_cast<size_t>(it - header.begin());
+  std::vector<double> values;
+  for (const auto& row : rows) values.push_back(c < row.size() ? row[c] : NAN);
+  return values;
+}
+
+CsvTable read_csv(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string(), 0, "cannot open the table (was it written?)");
+  CsvTable table;
+  std::string line;
+  int number = 0;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++number;
+    line = trim(line);
+    if (line.empty() || line[0] == '#') continue;
+    if (!header) {
+      for (const std::string& f : split(line)) table.header.push_back(trim(f, " \t\""));
+      header = true;
+      continue;
+    }
+    std::vector<double> row;
+    for (const std::string& raw : split(line)) {
+      const std::string f = trim(raw);
+      if (f.empty()) {
+        row.push_back(NAN);
+        continue;
+      }
+      char* end = nullptr;
+      const double v = std::strtod(f.c_str(), &end);
+      if (end != f.c_str() + f.size())
+        throw InputError(file.string(), number, "'" + f + "' is not a number");
+      row.push_back(v);
+    }
+    table.rows.push_back(std::move(row));
+  }
+  if (!header) throw InputError(file.string(), 0, "empty table (no header line)");
+  return table;
+}
+
+Crest first_crest(const std::vector<double>& time, const std::vector<double>& eta) {
+  std::vector<double> t, e;
+  for (size_t i = 0; i < eta.size() && i < time.size(); ++i)
+    if (std::isfinite(eta[i])) {
+      t.push_back(time[i]);
+      e.push_back(eta[i]);
+    }
+  if (e.empty()) return {};
+  const double eta_max = *std::max_element(e.begin(), e.end());
+  const double threshold = std::max(kCrestFloor, kCrestFraction * eta_max);
+  const auto n = static_cast<std::ptrdiff_t>(e.size());
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    if (!(e[k] > threshold)) continue;
+    bool crest = true;
+    for (std::ptrdiff_t j = std::max<std::ptrdiff_t>(0, k - kCrestHalfWindow);
+         j <= std::min(n - 1, k + kCrestHalfWindow); ++j)
+      crest = crest && e[k] >= e[j];
+    if (crest) return {t[k], e[k]};
+  }
+  return {};
+}
+
+double take_measure(const Measure& measure, const std::filesystem::path& post_folder) {
+  const std::filesystem::path file = post_folder / measure.csv;
+  const CsvTable table = read_csv(file);
+  const std::vector<double> values = table.column(measure.column, file.string());
+  switch (measure.reduction) {
+    case Reduction::kLast:
+      return values.empty() ? NAN : values.back();
+    case Reduction::kMax: {
+      double best = NAN;
+      for (double v : values)
+        if (std::isfinite(v) && !(v <= best)) best = v;
+      return best;
+    }
+    case Reduction::kFirstCrest:
+      return first_crest(table.column("time", file.string()), values).height;
+  }
+  return NAN;
+}
+
+}  // namespace lituya::sweep

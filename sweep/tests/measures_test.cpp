@@ -1,0 +1,123 @@
+#include "lituya/sweep/measures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "lituya/common/input_error.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace lituya::sweep;
+
+template <class F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const lituya::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+fs::path post_folder(const std::string& name) {
+  const fs::path folder = fs::temp_directory_path() / ("lituya_sweep_measures_" + name);
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
+}
+
+PostContent post_of(const std::string& post_table) {
+  return post_content(toml::parse("[post]\n" + post_table));
+}
+
+TEST(FirstCrest, TakesTheFirstMaximumAboveTheThresholdNotAWiggleOrTheHighest) {
+  // No water first (blank), a wiggle under 10 % of the highest eta, a small wiggle on the
+  // rising flank that is not the highest within 2 samples, the first crest (0.030 at 0.5 s),
+  // a trough, and a higher second crest (0.050 at 0.9 s).
+  const std::vector<double> t{0.0, 0.1, 0.2, 0.3, 0.35, 0.4, 0.45, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
+  const std::vector<double> eta{NAN,   0.004, 0.003, 0.020, 0.019, 0.025, 0.028,
+                                0.030, 0.010, 0.005, 0.020, 0.050, 0.040};
+  const Crest crest = first_crest(t, eta);
+  EXPECT_DOUBLE_EQ(crest.time, 0.5);
+  EXPECT_DOUBLE_EQ(crest.height, 0.030);
+}
+
+TEST(FirstCrest, HonoursTheOneMillimetreFloorAndPlateaus) {
+  // Everything under 1 mm: no crest.
+  const Crest none = first_crest({0, 1, 2, 3}, {0.0002, 0.0009, 0.0004, 0.0});
+  EXPECT_TRUE(std::isnan(none.time));
+  EXPECT_TRUE(std::isnan(none.height));
+  // A plateau: its first sample. A record that still rises at its end: its last sample.
+  EXPECT_DOUBLE_EQ(first_crest({0, 1, 2, 3, 4}, {0.0, 0.01, 0.02, 0.02, 0.0}).time, 2.0);
+  EXPECT_DOUBLE_EQ(first_crest({0, 1, 2, 3}, {0.0, 0.01, 0.02, 0.03}).time, 3.0);
+}
+
+TEST(Measures, ReadFromThePostTables) {
+  const fs::path post = post_folder("tables");
+  std::ofstream(post / "gauges.csv") << "time,G1,G2\n"
+                                        "0,,0\n"
+                                        "0.1,0.002,0.010\n"
+                                        "0.2,0.012,0.030\n"
+                                        "0.3,0.008,0.020\n"
+                                        "0.4,0.009,0.025\n"
+                                        "0.5,0.015,0.024\n"
+                                        "0.6,0.011,0.021\n"
+                                        "0.7,0.010,0.022\n"
+                                        "0.8,0.010,0.023\n";
+  std::ofstream(post / "runout.csv") << "time,front_position,front_travel\n0,0.2,0\n0.5,0.4,0.2\n"
+                                        "1.0,0.45,0.25\n";
+  std::ofstream(post / "leading_wave.csv") << "time,crest_x,crest_height,max_eta\n0,,,0.001\n"
+                                              "0.5,1.2,0.031,0.04\n1.0,1.8,0.027,0.03\n";
+  const PostContent content = post_of(
+      "gauges = [1.0, 2.0]\ngauge_names = ['G1', 'G2']\ntrack_materials = ['beads']\n"
+      "leading_wave = true\n");
+  const std::vector<Measure> measures =
+      parse_measures({"gauge_first_crest", "gauge_max:G2", "leading_wave_max", "front_travel_final",
+                      "front_travel_max"},
+                     content, "scene.toml");
+  ASSERT_EQ(measures.size(), 6u);
+  EXPECT_EQ(measures[0].name, "gauge_first_crest:G1");
+  EXPECT_EQ(measures[1].name, "gauge_first_crest:G2");
+  EXPECT_DOUBLE_EQ(take_measure(measures[0], post), 0.012);  // 0.2 s, before the higher 0.015
+  EXPECT_DOUBLE_EQ(take_measure(measures[1], post), 0.030);
+  EXPECT_DOUBLE_EQ(take_measure(measures[2], post), 0.030);
+  EXPECT_DOUBLE_EQ(take_measure(measures[3], post), 0.031);
+  EXPECT_DOUBLE_EQ(take_measure(measures[4], post), 0.25);
+  EXPECT_DOUBLE_EQ(take_measure(measures[5], post), 0.25);
+
+  // A table that was not written names its file.
+  const auto wall = parse_measures({"wall_height_final"}, content, "scene.toml");
+  EXPECT_NE(error_of([&] { take_measure(wall[0], post); }).find("wall_height.csv"),
+            std::string::npos);
+}
+
+TEST(Measures, AreCheckedAgainstTheScenePostTable) {
+  const PostContent gauges = post_of("gauges = [0.45, 0.75]\n");
+  EXPECT_EQ(gauges.gauge_names, (std::vector<std::string>{"x=0.45", "x=0.75"}));
+  EXPECT_EQ(default_measures(gauges).size(), 2u);
+  EXPECT_EQ(default_measures(gauges)[1].name, "gauge_first_crest:x=0.75");
+  EXPECT_EQ(default_measures(post_of("track_materials = ['a']\n"))[0].name, "front_travel_final");
+  EXPECT_TRUE(default_measures(PostContent{}).empty());
+
+  const std::string no_gauge =
+      error_of([&] { parse_measures({"gauge_max:G9"}, gauges, "scene.toml"); });
+  EXPECT_NE(no_gauge.find("scene.toml:1:"), std::string::npos) << no_gauge;
+  EXPECT_NE(no_gauge.find("\"x=0.45\", \"x=0.75\""), std::string::npos) << no_gauge;
+  EXPECT_NE(error_of([&] {
+              parse_measures({"front_travel_final"}, gauges, "scene.toml");
+            }).find("track_materials"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              parse_measures({"gauge_max"}, PostContent{}, "scene.toml");
+            }).find("no [post] table"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              parse_measures({"runout"}, gauges, "scene.toml");
+            }).find("--measure: unknown measure 'runout'"),
+            std::string::npos);
+}
+
+}  // namespace
