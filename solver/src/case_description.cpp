@@ -162,6 +162,10 @@ SolverSettings read_solver_settings(const TomlTable& t) {
   s.scheme = t.choice_or("scheme", {"musl", "usl"}, "musl") == "musl" ? TransferScheme::kMUSL
                                                                       : TransferScheme::kUSL;
   s.flip_fraction = t.number_in_or("flip_fraction", 0.0, 1.0, s.flip_fraction);
+  s.pic_damping_time = t.number_in_or("pic_damping_time", 0.0, 1e9, s.pic_damping_time);
+  if (s.pic_damping_time > 0 && t.has("flip_fraction"))
+    t.fail("give either 'flip_fraction' (per step) or 'pic_damping_time' (per second), not both",
+           "pic_damping_time");
   s.max_velocity = t.number_in_or("max_velocity", 1e-9, 1e9, s.max_velocity);
   s.volumetric_smoothing = t.boolean_or("volumetric_smoothing", s.volumetric_smoothing);
   const long long interval =
@@ -254,11 +258,17 @@ toml::table to_toml(const Stage& s) {
 }
 
 toml::table to_toml(const SolverSettings& s) {
-  return toml::table{{"scheme", s.scheme == TransferScheme::kMUSL ? "musl" : "usl"},
-                     {"flip_fraction", s.flip_fraction},
-                     {"max_velocity", s.max_velocity},
-                     {"volumetric_smoothing", s.volumetric_smoothing},
-                     {"pressure_projection_interval", s.pressure_projection_interval}};
+  toml::table t{{"scheme", s.scheme == TransferScheme::kMUSL ? "musl" : "usl"},
+
+                {"max_velocity", s.max_velocity},
+                {"volumetric_smoothing", s.volumetric_smoothing},
+                {"pressure_projection_interval", s.pressure_projection_interval}};
+  // One of the two blend settings (the reader rejects both together).
+  if (s.pic_damping_time > 0)
+    t.insert("pic_damping_time", s.pic_damping_time);
+  else
+    t.insert("flip_fraction", s.flip_fraction);
+  return t;
 }
 
 toml::table to_toml(const OutputSettings& o) {

@@ -263,7 +263,7 @@ void Simulation<dim>::nodal_update(double dt, double damping) {
 template <int dim>
 void Simulation<dim>::nodes_to_points(double dt) {
   const std::size_t n_points = points_.size();
-  const double flip = flip_fraction_;
+  const double flip = step_flip_fraction(dt);
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t p = 0; p < n_points; ++p) {
     const auto& nodes = mesh_.cell_nodes[points_.cell[p]];

@@ -226,3 +226,29 @@ TEST(CaseDescription, TractionErrorsNameTheLine) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CaseDescription, PicDampingTimeExcludesFlipFraction) {
+  auto path = std::filesystem::temp_directory_path() / "lituya_solver_settings.toml";
+  std::ofstream(path) << "[solver]\nflip_fraction = 0.99\npic_damping_time = 0.01\n";
+  lituya::TomlDocument doc(path);
+  try {
+    read_solver_settings(*doc.root().optional_table("solver"));
+    FAIL() << "both blend settings were accepted";
+  } catch (const lituya::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(":3"), std::string::npos) << e.what();
+  }
+  // Written back, a damping time comes without flip_fraction, and reads again.
+  SolverSettings s;
+  s.pic_damping_time = 0.01;
+  auto back = std::filesystem::temp_directory_path() / "lituya_solver_back.toml";
+  toml::table root;
+  root.insert("solver", to_toml(s));
+  std::ofstream(back) << root;
+  lituya::TomlDocument doc2(back);
+  EXPECT_DOUBLE_EQ(read_solver_settings(*doc2.root().optional_table("solver")).pic_damping_time,
+                   0.01);
+}
+
+}  // namespace

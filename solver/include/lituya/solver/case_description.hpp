@@ -79,6 +79,11 @@ enum class TransferScheme { kMUSL, kUSL };
 struct SolverSettings {
   TransferScheme scheme = TransferScheme::kMUSL;
   double flip_fraction = 0.99;
+  // When > 0 (s), replaces flip_fraction by exp(-dt / pic_damping_time) at every step: the
+  // PIC part then damps the velocity the grid cannot represent at a fixed rate in time,
+  // whatever the step, instead of a fixed fraction per step (which makes results depend on
+  // the Courant number; see the user manual, section 3). Experimental, off by default.
+  double pic_damping_time = 0;
   double max_velocity = 100.0;
   // Average the volumetric strain increment over the cells around each node before the
   // stress update (nodal mixed discretisation): removes the volumetric locking of linear

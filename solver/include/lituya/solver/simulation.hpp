@@ -16,6 +16,7 @@
 //   4. points -> nodes again: momentum of the updated point velocities, boundary conditions;
 //   5. points: strain and spin increments from the nodal velocities, Jaumann-rotated stress,
 //      constitutive update, volume update, relocation in the mesh, stability checks.
+#include <cmath>
 #include <functional>
 #include <iosfwd>
 #include <memory>
@@ -171,6 +172,11 @@ class Simulation {
   std::vector<double> node_volumetric_strain_, node_volume_;
   std::vector<double> point_volumetric_strain_;
   double flip_fraction_;
+  // The FLIP share of this step: flip_fraction, or exp(-dt / pic_damping_time) when given.
+  double step_flip_fraction(double dt) const {
+    const double tau = description_.solver.pic_damping_time;
+    return tau > 0 ? std::exp(-dt / tau) : flip_fraction_;
+  }
   bool musl_;
   double max_velocity_;
   // Liquid phase (empty in a dry case).
