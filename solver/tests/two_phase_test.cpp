@@ -326,3 +326,43 @@ TEST(PressureProjection, KeepsLinearFieldsAndIsAnOrthogonalProjection) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace lituya::solver;
+
+TEST(TwoPhase, StillWaterIn3DStaysStill) {
+  // The two-phase kernels are dimension templates: a 3D tank (tetrahedra, 4 points per cell)
+  // must keep still water still as the 2D one does. Reference p = rho_w g (H - y), H = 0.2 m;
+  // tolerances as in 2D (pressure RMS 2 % of rho_w g H; largest speed after 0.2 s below 1 %
+  // of sqrt(g H)).
+  BoxScene<3> s;
+  s.domain_size = {0.3, 0.3, 0.1};
+  s.cells = {6, 6, 2};
+  s.block_min = Eigen::Vector3d::Constant(2.0);  // no soil
+  s.block_max = Eigen::Vector3d::Constant(-1.0);
+  s.material = soil(0.002);
+  s.gravity = {0.0, -9.81, 0.0};
+  s.with_water = true;
+  s.water = water();
+  s.water_min = Eigen::Vector3d::Zero();
+  s.water_max = {0.3, 0.2, 0.1};
+  for (const char* side : {"x-", "x+", "y-", "z-", "z+"}) s.boundaries.push_back({side, roller()});
+  Simulation<3> sim = make_box_simulation<3>(s);
+  Stage stage = dynamic_stage(0.2);
+  stage.boundaries = {"x-", "x+", "y-", "z-", "z+"};
+  sim.run_stage(stage, nullptr);
+  const auto& q = sim.liquid();
+  ASSERT_GT(q.size(), 100u);
+  double sum = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const double exact = 1000.0 * 9.81 * (0.2 - q.position[i](1));
+    sum += (q.pressure[i] - exact) * (q.pressure[i] - exact);
+  }
+  EXPECT_LT(std::sqrt(sum / static_cast<double>(q.size())) / (1000.0 * 9.81 * 0.2), 0.02);
+  double v = 0;
+  for (const auto& u : q.velocity) v = std::max(v, u.norm());
+  EXPECT_LT(v, 0.01 * std::sqrt(9.81 * 0.2));
+}
+
+}  // namespace
