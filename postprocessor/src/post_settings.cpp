@@ -72,6 +72,10 @@ void read_water_settings(const TomlTable& root, const fs::path& post_toml, PostS
   if (!std::isfinite(s.leading_wave_start))
     root.fail("'leading_wave_start' must be a finite x position in m", "leading_wave_start");
   s.leading_wave_min_height = root.number_or("leading_wave_min_height", s.leading_wave_min_height);
+  s.surface_min_porosity = root.number_or("surface_min_porosity", s.surface_min_porosity);
+  if (!(s.surface_min_porosity >= 0 && s.surface_min_porosity <= 1))
+    root.fail("'surface_min_porosity' must lie in [0, 1] (0 counts all water, pore water too)",
+              "surface_min_porosity");
   if (!(s.leading_wave_min_height > 0) || !std::isfinite(s.leading_wave_min_height))
     root.fail("'leading_wave_min_height' must be > 0 (a wave height in m)",
               "leading_wave_min_height");

@@ -301,6 +301,23 @@ bool measure_slide(const PostSettings& settings, const SlideInput& input,
   return plotted;
 }
 
+// The liquid points of the free water: pore water (porosity below `min_porosity`) has no free
+// surface of its own, and a saturated slide standing above the lake must not read as a wave.
+PointCloud free_water(PointCloud cloud, double min_porosity) {
+  if (cloud.porosity.empty() || min_porosity <= 0) return cloud;
+  PointCloud out;
+  out.dimension = cloud.dimension;
+  for (size_t i = 0; i < cloud.position.size(); ++i) {
+    if (cloud.porosity[i] < min_porosity) continue;
+    out.position.push_back(cloud.position[i]);
+    if (!cloud.material.empty()) out.material.push_back(cloud.material[i]);
+    if (!cloud.volume.empty()) out.volume.push_back(cloud.volume[i]);
+    if (!cloud.id.empty()) out.id.push_back(cloud.id[i]);
+    out.porosity.push_back(cloud.porosity[i]);
+  }
+  return out;
+}
+
 bool measure_water(const PostSettings& settings, const WaterInput& input, int dimension,
                    PostFolder& out, PostResult& result) {
   const std::vector<SeriesEntry>& series = input.series;
@@ -317,7 +334,8 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
   }
 
   for (size_t k = 0; k < series.size(); ++k) {
-    const PointCloud liquid = read_liquid_points(series[k].file, dimension);
+    const PointCloud liquid =
+        free_water(read_liquid_points(series[k].file, dimension), settings.surface_min_porosity);
     result.liquid_time.push_back(series[k].time);
     for (size_t g = 0; g < gauges; ++g)
       result.gauge_eta[g].push_back(gauge_elevation(liquid, settings.gauges[g], input.half_width,

@@ -358,3 +358,76 @@ TEST_F(WaterCase, SlideKeysAreStillCheckedWhenOnlyWaterIsMeasured) {
 
 }  // namespace
 }  // namespace lituya::post
+
+namespace lituya::post {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Still water 0.15 m deep over [0, 1.5] with a 0.02 m crest at x = 0.45, and downstream of it
+// a saturated mound (pore water, porosity 0.4) standing 0.1 m above the water at
+// x in [0.8, 0.9], as a saturated slide that reaches past the shoreline.
+class PoreWaterCase : public synthetic::TempFolderTest {
+ protected:
+  void write_case(const std::string& extra_key) {
+    case_ = folder_ / "case";
+    synthetic::write_text(case_ / "post.toml",
+                          "format = \"lituya-post\"\nversion = 1\nstage = \"release\"\n"
+                          "gauges = [0.45, 0.85]\nstill_water_level = 0.15\n"
+                          "leading_wave = true\nleading_wave_start = 0.0\n" +
+                              extra_key);
+    synthetic::write_text(
+        case_ / "materials.toml",
+        "format = \"lituya-materials\"\nversion = 1\n[[material]]\nname = \"water\"\n");
+    synthetic::write_text(case_ / "stages.toml",
+                          "format = \"lituya-stages\"\nversion = 1\ndimension = 2\n");
+    fs::create_directories(case_ / "output");
+    PointCloud cloud;
+    const double h = 0.005;
+    synthetic::add_water(cloud, 0.0, 0.8, 0.0, h, [](double x) {
+      const double d = (x - 0.45) / 0.05;
+      return 0.15 + 0.02 * std::exp(-0.5 * d * d);
+    });
+    synthetic::add_water(cloud, 0.9, 1.5, 0.0, h, [](double) { return 0.15; });
+    cloud.porosity.assign(cloud.position.size(), 1.0);
+    // The mound: pore water points, each holding 0.4 of its mixture volume.
+    PointCloud mound;
+    synthetic::add_water(mound, 0.8, 0.9, 0.0, h, [](double) { return 0.25; });
+    for (size_t i = 0; i < mound.position.size(); ++i) {
+      cloud.position.push_back(mound.position[i]);
+      cloud.material.push_back(0);
+      cloud.volume.push_back(0.4 * mound.volume[i]);
+      cloud.id.push_back(static_cast<int>(cloud.id.size()));
+      cloud.porosity.push_back(0.4);
+    }
+    PvdWriter pvd(case_ / "output" / "release_liquid.pvd");
+    synthetic::write_liquid_cloud(cloud, case_ / "output" / "release_liquid_0000.vtu");
+    pvd.add(0.0, "release_liquid_0000.vtu");
+  }
+  fs::path case_;
+};
+
+TEST_F(PoreWaterCase, PoreWaterIsNotFreeSurface) {
+  // Default (surface_min_porosity 0.9): the mound is not water surface. The leading crest
+  // is the 0.02 m wave at x = 0.45 (within one 0.01 m bin), and the gauge over the mound
+  // sees no free water (blank).
+  write_case("");
+  const PostResult r = postprocess(case_, case_ / "post", false);
+  ASSERT_EQ(r.crest_x.size(), 1u);
+  EXPECT_NEAR(r.crest_x[0], 0.45, 0.01);
+  EXPECT_NEAR(r.crest_eta[0], 0.02, 0.003);
+  EXPECT_TRUE(std::isnan(r.gauge_eta[1][0]));
+}
+
+TEST_F(PoreWaterCase, AllWaterCountsWhenAsked) {
+  // surface_min_porosity = 0: the mound's top (0.25 m, 0.1 m above still water) becomes the
+  // most downstream crest and the gauge over it reads 0.1 m (to half a point spacing).
+  write_case("surface_min_porosity = 0.0\n");
+  const PostResult r = postprocess(case_, case_ / "post", false);
+  ASSERT_EQ(r.crest_x.size(), 1u);
+  EXPECT_NEAR(r.crest_x[0], 0.85, 0.05);
+  EXPECT_NEAR(r.gauge_eta[1][0], 0.1, 0.003);
+}
+
+}  // namespace
+}  // namespace lituya::post

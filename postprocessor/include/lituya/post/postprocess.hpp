@@ -44,8 +44,12 @@ struct PostSettings {
   bool leading_wave = false;               // track the first wave crest
   double leading_wave_start = 0;           // m, x from which the crest is looked for
   double leading_wave_min_height = 0.002;  // m, smallest crest that counts as a wave
-  std::string liquid_stage;                // the liquid series read; default = stage
-  std::string gauge_reference_file;        // absolute, or empty when none is given
+  // Liquid points whose porosity is below this are pore water (of a saturated slide, or
+  // water that entered a dry one) and are not part of the free surface that the gauges, the
+  // leading wave and the surface profiles measure. 0 counts every liquid point.
+  double surface_min_porosity = 0.9;
+  std::string liquid_stage;          // the liquid series read; default = stage
+  std::string gauge_reference_file;  // absolute, or empty when none is given
 
   bool measures_slide() const { return !track_materials.empty(); }
   bool measures_water() const { return !gauges.empty() || leading_wave; }
