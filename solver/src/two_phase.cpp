@@ -17,8 +17,8 @@
 //   points (the pore pressure interpolated from the nodes). The liquid node gets n_i F_i and
 //   the solid node (1 - n_i) F_i: their sum is the full pore-pressure force (momentum is
 //   conserved), and with n_i from the same grain volumes, still water over and in a soil bed
-//   is in exact discrete balance (hydrostatic pressure carries the water, buoyancy lightens
-//   the skeleton).
+//   starts in discrete balance (hydrostatic pressure carries the water, buoyancy lightens
+//   the skeleton; test TwoPhase.SaturatedBedUnderWaterStaysAtRest).
 // - Drag (eqs. 23, 24) is integrated implicitly per node: with a = dt sum_s N_i V_s C_s,
 //       (m_s + a) v_s - a v_w = m_s v_s*,   -a v_s + (m_w + a) v_w = m_w v_w*
 //   (v* the velocities after the explicit forces), a 2x2 solve shared by all directions. The
