@@ -192,7 +192,8 @@ void read_regions(const TomlTable& root, Scene& scene) {
   std::vector<std::string> material_names;
   for (const auto& m : scene.materials) material_names.push_back(m.name);
   std::set<std::string> groups;
-  for (const TomlTable& t : root.tables("region")) {
+  const std::vector<TomlTable> region_tables = root.tables("region");
+  for (const TomlTable& t : region_tables) {
     Region r;
     r.group = t.string("group");
     r.group_line = t.line_of("group");
@@ -215,6 +216,20 @@ void read_regions(const TomlTable& root, Scene& scene) {
   }
   if (scene.regions.empty())
     root.fail("no [[region]] given: name at least one physical group to fill with material");
+  // With water anywhere in the scene, a dry soil may meet it too (a slide entering a lake):
+  // the drag of eq. (23) then needs every soil's grain diameter, eq. (24).
+  bool has_water = false;
+  for (const Region& r : scene.regions)
+    has_water = has_water || scene.materials[r.material].is_liquid() || r.pore_water;
+  for (std::size_t k = 0; k < scene.regions.size() && has_water; ++k) {
+    const solver::Material& m = scene.materials[scene.regions[k].material];
+    if (!m.is_liquid() && !(m.grain_diameter > 0))
+      region_tables[k].fail("region '" + scene.regions[k].group + "' is soil '" + m.name +
+                                "' without 'grain_diameter', and the scene has water: the drag "
+                                "between soil and water (eq. (23)) needs the mean grain "
+                                "diameter D_p for the Kozeny-Carman permeability (eq. (24))",
+                            "material");
+  }
 }
 
 void read_boundaries_and_stages(const TomlTable& root, Scene& scene) {

@@ -322,6 +322,14 @@ TEST_F(BadScene, SaturatedSoilNeedsGrainDiameter) {
                {"'sand'", "grain_diameter", "eq. (23)", "eq. (24)"});
 }
 
+TEST_F(BadScene, DrySoilMeetingWaterNeedsGrainDiameter) {
+  // A dry slide that will run into the lake: its soil needs D_p too (the drag starts when the
+  // water enters it), reported at the soil region's material line.
+  const auto scene = water_scene("", "material = \"water\"\n", false);
+  expect_error(scene, "scene.toml", line_of(scene, "material = \"sand\""),
+               {"'sand'", "grain_diameter", "eq. (23)", "the scene has water"});
+}
+
 TEST_F(BadScene, HydrostaticNeedsGravityAlongMinusY) {
   auto scene = water_scene("", "material = \"water\"\n");
   scene = replaced(scene, "initial_stress = \"k0\"", "initial_stress = \"zero\"");
