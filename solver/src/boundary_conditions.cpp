@@ -29,6 +29,7 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
   NodalConstraint<dim> constraint;
   constraint.type = bc.type;
   constraint.phase = bc.phase;
+  constraint.ramp_time = bc.ramp_time;
   constraint.friction = bc.friction;
   constraint.directions = bc.directions;
   if (facets.empty())

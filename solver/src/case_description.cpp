@@ -104,11 +104,13 @@ BoundaryCondition read_boundary(const TomlTable& t, int dimension) {
     b.traction = t.numbers("traction");
     if (static_cast<int>(b.traction.size()) != dimension)
       t.fail("'traction' must have " + std::to_string(dimension) + " components (Pa)", "traction");
+    b.ramp_time = t.number_in_or("ramp_time", 0.0, 1e9, 0.0);
     b.phase = t.choice_or("phase", {"solid", "liquid"}, "solid") == "solid"
                   ? BoundaryPhase::kSolid
                   : BoundaryPhase::kLiquid;
   } else {
-    if (t.has("traction")) t.fail("'traction' applies only to type = \"traction\"", "traction");
+    for (const char* k : {"traction", "ramp_time"})
+      if (t.has(k)) t.fail(std::string("'") + k + "' applies only to type = \"traction\"", k);
     const std::string phase = t.choice_or("phase", {"both", "solid", "liquid"}, "both");
     b.phase = phase == "both"    ? BoundaryPhase::kBoth
               : phase == "solid" ? BoundaryPhase::kSolid
@@ -231,6 +233,7 @@ toml::table to_toml(const BoundaryCondition& b) {
     toml::array a;
     for (double v : b.traction) a.push_back(v);
     t.insert("traction", a);
+    if (b.ramp_time > 0) t.insert("ramp_time", b.ramp_time);
   }
   if (b.phase != BoundaryPhase::kBoth) t.insert("phase", phases[static_cast<int>(b.phase)]);
   if (b.type == BoundaryType::kContact) t.insert("friction", b.friction);

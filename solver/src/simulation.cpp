@@ -144,10 +144,13 @@ void Simulation<dim>::apply_tractions() {
   for (const NodalConstraint<dim>* c : active_tractions_) {
     const bool liquid = c->phase == BoundaryPhase::kLiquid;
     if (liquid && !has_liquid_) continue;
+    // A load ramp: the traction rises linearly from zero over ramp_time, so that a load does
+    // not strike like a hammer (a sudden load rings as an undrained wave, see Terzaghi).
+    const double factor = c->ramp_time > 0 ? std::min(1.0, stage_time_ / c->ramp_time) : 1.0;
     std::vector<double>& mass = liquid ? liquid_grid_.mass : grid_.mass;
     std::vector<Vec>& force = liquid ? liquid_grid_.force : grid_.force;
     for (std::size_t k = 0; k < c->nodes.size(); ++k)
-      if (mass[c->nodes[k]] > kMassFloor) force[c->nodes[k]] += c->force[k];
+      if (mass[c->nodes[k]] > kMassFloor) force[c->nodes[k]] += factor * c->force[k];
   }
 }
 
@@ -519,6 +522,7 @@ StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback&
     double dt = stage.courant * next_time_step_;
     dt = std::min(dt, next_output - t);
     last_dt_ = dt;
+    stage_time_ = t + dt;  // the load at the end of the step: a ramp reaches 1 at ramp_time
     step(dt, stage.damping);
     t += dt;
     ++stage_steps_;

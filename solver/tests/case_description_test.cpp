@@ -220,6 +220,10 @@ TEST(CaseDescription, TractionErrorsNameTheLine) {
       "phase = \"both\"\n",
       2);
   EXPECT_NE(msg.find(":5"), std::string::npos) << msg;
+  // A load ramp on a velocity boundary.
+  msg = error_reading_boundary("[[boundary]]\ngroup = \"b\"\ntype = \"roller\"\nramp_time = 0.5\n",
+                               2);
+  EXPECT_NE(msg.find(":4"), std::string::npos) << msg;
   // A traction without its vector.
   msg = error_reading_boundary("[[boundary]]\ngroup = \"b\"\ntype = \"traction\"\n", 2);
   EXPECT_NE(msg.find("traction"), std::string::npos) << msg;

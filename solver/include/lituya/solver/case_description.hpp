@@ -54,9 +54,10 @@ struct BoundaryCondition {
   std::string name;
   std::string group;
   BoundaryType type = BoundaryType::kFixed;
-  double friction = 0;                         // contact only
-  std::vector<int> directions;                 // fixity only: 0 = x, 1 = y, 2 = z
-  std::vector<double> traction;                // traction only: Pa, `dimension` components
+  double friction = 0;           // contact only
+  std::vector<int> directions;   // fixity only: 0 = x, 1 = y, 2 = z
+  std::vector<double> traction;  // traction only: Pa, `dimension` components
+  double ramp_time = 0;          // traction only: s, linear rise from 0 at the stage start
   BoundaryPhase phase = BoundaryPhase::kBoth;  // traction: kSolid (default) or kLiquid
 };
 

@@ -160,6 +160,7 @@ class Simulation {
   std::vector<const NodalConstraint<dim>*> active_constraints_, active_liquid_constraints_;
   std::vector<const NodalConstraint<dim>*> active_tractions_;
   void apply_tractions();
+  double stage_time_ = 0;  // time since the start of the running stage (load ramps)
   std::vector<MaterialModelData> materials_;
   Vec gravity_;
   int threads_ = 1;
