@@ -78,22 +78,8 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
     node_volume_.assign(n_nodes, 0.0);
     point_volumetric_strain_.assign(points_.size(), 0.0);
   }
-  // Locate every point and cache its shape values.
-  shape_.resize(points_.size());
-  for (std::size_t p = 0; p < points_.size(); ++p) {
-    int start = points_.cell[p];
-    int cell = -1;
-    if (start >= 0 && start < static_cast<int>(mesh_.cell_count()))
-      cell = mesh_.locate(start, points_.position[p], shape_[p]);
-    if (cell < 0 && p > 0) cell = mesh_.locate(points_.cell[p - 1], points_.position[p], shape_[p]);
-    if (cell < 0) cell = mesh_.locate_anywhere(points_.position[p], shape_[p]);
-    if (cell < 0)
-      throw InputError(description_.points_file, 0,
-                       "point " + std::to_string(points_.id[p]) + " at " +
-                           format_vector(points_.position[p].data(), dim) +
-                           " lies outside the background mesh");
-    points_.cell[p] = cell;
-  }
+  locate_all<dim>(mesh_, points_.position, points_.cell, points_.id, shape_,
+                  description_.points_file, "point");
   if (has_liquid_) setup_liquid();
   next_time_step_ = stable_time_step(1.0);
 }
@@ -409,13 +395,9 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
         << format_vector(points_.velocity[p].data(), dim) << ", stress "
         << format_vector(points_.stress[p].data(), 6)
         << "); the run went unstable: reduce the Courant number or check the material";
-    else if (bad_kind == 2)
-      m << "speed " << points_.velocity[p].norm()
-        << " m/s exceeds [solver] max_velocity = " << max_velocity_
-        << " m/s; the run is probably unstable (reduce the Courant number)";
     else
-      m << "left the background mesh (velocity " << format_vector(points_.velocity[p].data(), dim)
-        << " m/s); extend the mesh or close the boundary it crossed";
+      m << describe_fault(bad_kind == 2 ? PointFault::kTooFast : PointFault::kLeftMesh,
+                          points_.velocity[p], max_velocity_);
     throw RunError(m.str());
   }
 }

@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "lituya/common/input_error.hpp"
+#include "lituya/solver/mesh.hpp"
 #include "lituya/solver/mohr_coulomb.hpp"
 
 namespace lituya::solver::detail {
@@ -69,6 +71,48 @@ inline std::string format_vector(const double* v, int n) {
   for (int i = 0; i < n; ++i) s << (i ? ", " : "") << v[i];
   s << ")";
   return s.str();
+}
+
+// Locates every point of a point set and caches its shape values: from its stored cell, else
+// from the previous point's, else by a search. A point outside the mesh is an InputError
+// naming `file` ("point" or "liquid point" `what`).
+template <int dim, class Vec, class Shape>
+void locate_all(const Mesh<dim>& mesh, const std::vector<Vec>& position, std::vector<int>& cell,
+                const std::vector<int>& id, std::vector<Shape>& shape, const std::string& file,
+                const std::string& what) {
+  shape.resize(position.size());
+  for (std::size_t p = 0; p < position.size(); ++p) {
+    const int start = cell[p];
+    int found = -1;
+    if (start >= 0 && start < static_cast<int>(mesh.cell_count()))
+      found = mesh.locate(start, position[p], shape[p]);
+    if (found < 0 && p > 0) found = mesh.locate(cell[p - 1], position[p], shape[p]);
+    if (found < 0) found = mesh.locate_anywhere(position[p], shape[p]);
+    if (found < 0)
+      throw InputError(file, 0,
+                       what + " " + std::to_string(id[p]) + " at " +
+                           format_vector(position[p].data(), dim) +
+                           " lies outside the background mesh");
+    cell[p] = found;
+  }
+}
+
+// What stops a run at a point (update_stress_and_relocate, update_liquid_and_relocate).
+enum class PointFault { kNone, kNotFinite, kTooFast, kLeftMesh };
+
+// The diagnostic of a too fast point or one that left the mesh (a non-finite one names its
+// own fields).
+template <class Vec>
+std::string describe_fault(PointFault fault, const Vec& velocity, double max_velocity) {
+  std::ostringstream m;
+  if (fault == PointFault::kTooFast)
+    m << "speed " << velocity.norm() << " m/s exceeds [solver] max_velocity = " << max_velocity
+      << " m/s; the run is probably unstable (reduce the Courant number)";
+  else
+    m << "left the background mesh (velocity "
+      << format_vector(velocity.data(), static_cast<int>(velocity.size()))
+      << " m/s); extend the mesh or close the boundary it crossed";
+  return m.str();
 }
 
 }  // namespace lituya::solver::detail

@@ -120,22 +120,8 @@ void Simulation<dim>::setup_liquid() {
     for (int node : mesh_.cell_nodes[c])
       node_mesh_volume_[node] += mesh_.cell_volume[c] / (dim + 1);
   liquid_flux_divergence_.assign(liquid_.size(), 0.0);
-  liquid_shape_.resize(liquid_.size());
-  for (std::size_t q = 0; q < liquid_.size(); ++q) {
-    int start = liquid_.cell[q];
-    int cell = -1;
-    if (start >= 0 && start < static_cast<int>(mesh_.cell_count()))
-      cell = mesh_.locate(start, liquid_.position[q], liquid_shape_[q]);
-    if (cell < 0 && q > 0)
-      cell = mesh_.locate(liquid_.cell[q - 1], liquid_.position[q], liquid_shape_[q]);
-    if (cell < 0) cell = mesh_.locate_anywhere(liquid_.position[q], liquid_shape_[q]);
-    if (cell < 0)
-      throw InputError(description_.liquid_points_file, 0,
-                       "liquid point " + std::to_string(liquid_.id[q]) + " at " +
-                           format_vector(liquid_.position[q].data(), dim) +
-                           " lies outside the background mesh");
-    liquid_.cell[q] = cell;
-  }
+  locate_all<dim>(mesh_, liquid_.position, liquid_.cell, liquid_.id, liquid_shape_,
+                  description_.liquid_points_file, "liquid point");
 }
 
 template <int dim>
@@ -440,13 +426,9 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
       m << "velocity or pressure is not finite (velocity "
         << format_vector(liquid_.velocity[q].data(), dim) << ", pressure " << liquid_.pressure[q]
         << " Pa); the run went unstable: reduce the Courant number";
-    else if (bad_kind == 2)
-      m << "speed " << liquid_.velocity[q].norm()
-        << " m/s exceeds [solver] max_velocity = " << max_velocity_
-        << " m/s; the run is probably unstable (reduce the Courant number)";
     else
-      m << "left the background mesh (velocity " << format_vector(liquid_.velocity[q].data(), dim)
-        << " m/s); extend the mesh or close the boundary it crossed";
+      m << describe_fault(bad_kind == 2 ? PointFault::kTooFast : PointFault::kLeftMesh,
+                          liquid_.velocity[q], max_velocity_);
     throw RunError(m.str());
   }
 }
