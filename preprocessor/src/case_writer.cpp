@@ -89,29 +89,31 @@ void write_geometry(const Mesh& mesh, const std::vector<std::int32_t>& cell_grou
   vtu.write(file);
 }
 
-void write_points(const MaterialPoints& points, const fs::path& file) {
+namespace {
+// The arrays both point files share; the caller adds its own (stress or pressure) and writes.
+template <class Points>
+VtuWriter point_set_writer(const Points& points) {
   VtuWriter vtu;
   vtu.set_points(points.position);
   vtu.set_vertex_cells();
   vtu.add_point_data("material", points.material);
   vtu.add_point_data("volume", 1, points.volume);
   vtu.add_point_data("mass", 1, points.mass);
-  vtu.add_point_data("stress", 6, points.stress);
   vtu.add_point_data("velocity", 3, points.velocity);
   vtu.add_point_data("cell", points.cell);
+  return vtu;
+}
+}  // namespace
+
+void write_points(const MaterialPoints& points, const fs::path& file) {
+  VtuWriter vtu = point_set_writer(points);
+  vtu.add_point_data("stress", 6, points.stress);
   vtu.write(file);
 }
 
 void write_liquid_points(const LiquidPoints& points, const fs::path& file) {
-  VtuWriter vtu;
-  vtu.set_points(points.position);
-  vtu.set_vertex_cells();
-  vtu.add_point_data("material", points.material);
-  vtu.add_point_data("volume", 1, points.volume);
-  vtu.add_point_data("mass", 1, points.mass);
+  VtuWriter vtu = point_set_writer(points);
   vtu.add_point_data("pressure", 1, points.pressure);
-  vtu.add_point_data("velocity", 3, points.velocity);
-  vtu.add_point_data("cell", points.cell);
   vtu.write(file);
 }
 
