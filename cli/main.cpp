@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* kUsage =
-    R"(Lituya: MPM for granular landslides (dry flows; the water phase is the next milestone)
+    R"(Lituya: MPM for granular landslides (dry and saturated flows, free water, surge waves)
 
 usage:
   lituya pre    SCENE.toml [-o CASE] [--force]     mesh the scene, seed points, write the case

@@ -163,11 +163,16 @@ SolverSettings read_solver_settings(const TomlTable& t) {
   SolverSettings s;
   s.scheme = t.choice_or("scheme", {"musl", "usl"}, "musl") == "musl" ? TransferScheme::kMUSL
                                                                       : TransferScheme::kUSL;
-  s.flip_fraction = t.number_in_or("flip_fraction", 0.0, 1.0, s.flip_fraction);
-  s.pic_damping_time = t.number_in_or("pic_damping_time", 0.0, 1e9, s.pic_damping_time);
-  if (s.pic_damping_time > 0 && t.has("flip_fraction"))
-    t.fail("give either 'flip_fraction' (per step) or 'pic_damping_time' (per second), not both",
-           "pic_damping_time");
+  if (t.has("flip_fraction")) s.flip_fraction = t.number_in_or("flip_fraction", 0.0, 1.0, 0.0);
+  for (const char* key : {"pic_damping_time", "liquid_pic_damping_time"}) {
+    if (!t.has(key)) continue;
+    if (s.flip_fraction)
+      t.fail(std::string("give either 'flip_fraction' (a share per step) or '") + key +
+                 "' (a damping time in seconds), not both",
+             key);
+    const double tau = t.number_in_or(key, 1e-12, 1e9, 1.0);
+    (std::string(key) == "pic_damping_time" ? s.pic_damping_time : s.liquid_pic_damping_time) = tau;
+  }
   s.max_velocity = t.number_in_or("max_velocity", 1e-9, 1e9, s.max_velocity);
   s.volumetric_smoothing = t.boolean_or("volumetric_smoothing", s.volumetric_smoothing);
   const long long interval =
@@ -266,11 +271,10 @@ toml::table to_toml(const SolverSettings& s) {
                 {"max_velocity", s.max_velocity},
                 {"volumetric_smoothing", s.volumetric_smoothing},
                 {"pressure_projection_interval", s.pressure_projection_interval}};
-  // One of the two blend settings (the reader rejects both together).
-  if (s.pic_damping_time > 0)
-    t.insert("pic_damping_time", s.pic_damping_time);
-  else
-    t.insert("flip_fraction", s.flip_fraction);
+  // Only the blend settings the scene gave: absent ones keep their automatic defaults.
+  if (s.flip_fraction) t.insert("flip_fraction", *s.flip_fraction);
+  if (s.pic_damping_time) t.insert("pic_damping_time", *s.pic_damping_time);
+  if (s.liquid_pic_damping_time) t.insert("liquid_pic_damping_time", *s.liquid_pic_damping_time);
   return t;
 }
 

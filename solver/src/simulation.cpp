@@ -40,7 +40,8 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
       has_liquid_(!liquid.empty()),
       liquid_(std::move(liquid)) {
   for (int d = 0; d < dim; ++d) gravity_(d) = description_.gravity.at(d);
-  flip_fraction_ = description_.solver.flip_fraction;
+  damping_ = resolve_transfer_damping(
+      description_.solver, characteristic_cell_size(mesh_.cell_volume, dim), gravity_.norm());
   musl_ = description_.solver.scheme == TransferScheme::kMUSL;
   max_velocity_ = description_.solver.max_velocity;
   volumetric_smoothing_ = description_.solver.volumetric_smoothing;
@@ -252,7 +253,7 @@ void Simulation<dim>::nodal_update(double dt, double damping) {
 template <int dim>
 void Simulation<dim>::nodes_to_points(double dt) {
   const std::size_t n_points = points_.size();
-  const double flip = step_flip_fraction(dt);
+  const double flip = damping_.solid.flip_share(dt);
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t p = 0; p < n_points; ++p) {
     const auto& nodes = mesh_.cell_nodes[points_.cell[p]];

@@ -68,6 +68,7 @@ std::vector<StageReport> run(const CaseDescription& description, const SolveOpti
   note("Lituya solve: " + std::to_string(dim) + "D, " + std::to_string(n_points) + " points (" +
        std::to_string(n_liquid) + " liquid), " + std::to_string(simulation.mesh().cell_count()) +
        " cells, " + std::to_string(options.threads) + " thread(s)");
+  note(simulation.transfer_damping().description);
   try {
     for (const Stage& stage : description.stages) {
       reports.push_back(simulation.run_stage(stage, on_output));

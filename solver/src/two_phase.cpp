@@ -317,7 +317,7 @@ void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
 template <int dim>
 void Simulation<dim>::liquid_nodes_to_points(double dt) {
   const std::size_t n_liquid = liquid_.size();
-  const double flip = step_flip_fraction(dt);
+  const double flip = damping_.liquid.flip_share(dt);
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t q = 0; q < n_liquid; ++q) {
     const auto& nodes = mesh_.cell_nodes[liquid_.cell[q]];

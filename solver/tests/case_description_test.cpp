@@ -233,6 +233,19 @@ TEST(CaseDescription, TractionErrorsNameTheLine) {
 
 namespace {
 
+TEST(CaseDescription, LiquidDampingTimeExcludesFlipFractionToo) {
+  auto path = std::filesystem::temp_directory_path() / "lituya_solver_liquid.toml";
+  std::ofstream(path) << "[solver]\nflip_fraction = 0.99\n\nliquid_pic_damping_time = 0.01\n";
+  lituya::TomlDocument doc(path);
+  try {
+    read_solver_settings(*doc.root().optional_table("solver"));
+    FAIL() << "flip_fraction and liquid_pic_damping_time were accepted together";
+  } catch (const lituya::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(":4"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("liquid_pic_damping_time"), std::string::npos);
+  }
+}
+
 TEST(CaseDescription, PicDampingTimeExcludesFlipFraction) {
   auto path = std::filesystem::temp_directory_path() / "lituya_solver_settings.toml";
   std::ofstream(path) << "[solver]\nflip_fraction = 0.99\npic_damping_time = 0.01\n";
@@ -251,8 +264,11 @@ TEST(CaseDescription, PicDampingTimeExcludesFlipFraction) {
   root.insert("solver", to_toml(s));
   std::ofstream(back) << root;
   lituya::TomlDocument doc2(back);
-  EXPECT_DOUBLE_EQ(read_solver_settings(*doc2.root().optional_table("solver")).pic_damping_time,
-                   0.01);
+  const SolverSettings read_back = read_solver_settings(*doc2.root().optional_table("solver"));
+  ASSERT_TRUE(read_back.pic_damping_time.has_value());
+  EXPECT_DOUBLE_EQ(*read_back.pic_damping_time, 0.01);
+  EXPECT_FALSE(read_back.flip_fraction.has_value());
+  EXPECT_FALSE(read_back.liquid_pic_damping_time.has_value());
 }
 
 }  // namespace

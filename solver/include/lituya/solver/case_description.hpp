@@ -3,6 +3,7 @@
 // preprocessor, from the matching tables of scene.toml). The readers validate every value and
 // name the file and line of anything wrong; the writers produce the tables the solver reads,
 // so a scene and a case folder share one definition of each key.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -79,12 +80,16 @@ enum class TransferScheme { kMUSL, kUSL };
 
 struct SolverSettings {
   TransferScheme scheme = TransferScheme::kMUSL;
-  double flip_fraction = 0.99;
-  // When > 0 (s), replaces flip_fraction by exp(-dt / pic_damping_time) at every step: the
-  // PIC part then damps the velocity the grid cannot represent at a fixed rate in time,
-  // whatever the step, instead of a fixed fraction per step (which makes results depend on
-  // the Courant number; see the user manual, section 3). Experimental, off by default.
-  double pic_damping_time = 0;
+  // FLIP/PIC blend. By default the PIC share is set per unit time, not per step, so that
+  // results do not depend on the Courant number (user manual, section 3): each step keeps
+  // the FLIP share exp(-dt / tau) of the point's own velocity update. The damping times tau
+  // default to multiples of the grid's gravity time sqrt(h / g) (h: the mesh's cell size),
+  // see resolve_transfer_damping(). Give at most one of the two forms:
+  //  - flip_fraction: the old fixed share per step, for both phases (0.99 = 1 % PIC a step);
+  //  - pic_damping_time (solid) and liquid_pic_damping_time (water), in seconds.
+  std::optional<double> flip_fraction;
+  std::optional<double> pic_damping_time;
+  std::optional<double> liquid_pic_damping_time;
   double max_velocity = 100.0;
   // Average the volumetric strain increment over the cells around each node before the
   // stress update (nodal mixed discretisation): removes the volumetric locking of linear

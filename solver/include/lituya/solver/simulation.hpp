@@ -27,6 +27,7 @@
 
 #include "lituya/solver/boundary_conditions.hpp"
 #include "lituya/solver/case_description.hpp"
+#include "lituya/solver/transfer_damping.hpp"
 #include "lituya/solver/liquid_points.hpp"
 #include "lituya/solver/material_points.hpp"
 #include "lituya/solver/mesh.hpp"
@@ -79,6 +80,7 @@ class Simulation {
   double kinetic_energy() const;
   long step_count() const { return step_count_; }
   const Mesh<dim>& mesh() const { return mesh_; }
+  const TransferDamping& transfer_damping() const { return damping_; }
   const MaterialPoints<dim>& points() const { return points_; }
   MaterialPoints<dim>& points() { return points_; }
   const CaseDescription& description() const { return description_; }
@@ -172,12 +174,7 @@ class Simulation {
   bool volumetric_smoothing_;
   std::vector<double> node_volumetric_strain_, node_volume_;
   std::vector<double> point_volumetric_strain_;
-  double flip_fraction_;
-  // The FLIP share of this step: flip_fraction, or exp(-dt / pic_damping_time) when given.
-  double step_flip_fraction(double dt) const {
-    const double tau = description_.solver.pic_damping_time;
-    return tau > 0 ? std::exp(-dt / tau) : flip_fraction_;
-  }
+  TransferDamping damping_;  // the FLIP/PIC blend of each phase
   bool musl_;
   double max_velocity_;
   // Liquid phase (empty in a dry case).
