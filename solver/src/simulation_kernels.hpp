@@ -102,12 +102,14 @@ enum class PointFault { kNone, kNotFinite, kTooFast, kLeftMesh };
 
 // The diagnostic of a too fast point or one that left the mesh (a non-finite one names its
 // own fields).
+// remedy: what to try, for a too fast point.
 template <class Vec>
-std::string describe_fault(PointFault fault, const Vec& velocity, double max_velocity) {
+std::string describe_fault(PointFault fault, const Vec& velocity, double max_velocity,
+                           const char* remedy = "reduce the Courant number") {
   std::ostringstream m;
   if (fault == PointFault::kTooFast)
     m << "speed " << velocity.norm() << " m/s exceeds [solver] max_velocity = " << max_velocity
-      << " m/s; the run is probably unstable (reduce the Courant number)";
+      << " m/s; the run is probably unstable (" << remedy << ")";
   else
     m << "left the background mesh (velocity "
       << format_vector(velocity.data(), static_cast<int>(velocity.size()))

@@ -427,8 +427,12 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
         << format_vector(liquid_.velocity[q].data(), dim) << ", pressure " << liquid_.pressure[q]
         << " Pa); the run went unstable: reduce the Courant number";
     else
+      // Water jets out of the impact zone are FLIP noise grown unchecked (user manual, 2.6):
+      // a shorter liquid damping time is the first thing to try, the Courant number rarely.
       m << describe_fault(bad_kind == 2 ? PointFault::kTooFast : PointFault::kLeftMesh,
-                          liquid_.velocity[q], max_velocity_);
+                          liquid_.velocity[q], max_velocity_,
+                          "try a shorter [solver] liquid_pic_damping_time, e.g. half the one "
+                          "in output/log.txt, or a smaller Courant number");
     throw RunError(m.str());
   }
 }
