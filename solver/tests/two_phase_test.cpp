@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "lituya/common/input_error.hpp"
 #include "lituya/solver/box_scene.hpp"
 #include "lituya/solver/simulation.hpp"
 
@@ -113,6 +114,25 @@ TEST(TwoPhase, FreeFallingWaterConservesMassAndMomentum) {
     momentum += sim.liquid().mass[i] * sim.liquid().velocity[i];
   EXPECT_NEAR(momentum(0), 0.0, 1e-9 * mass);
   EXPECT_NEAR(momentum(1) / (mass * -9.81 * 0.05), 1.0, 1e-9);
+}
+
+TEST(TwoPhase, TooFastWaterNamesTheWaterDampingRemedy) {
+  // Free fall passes 0.2 m/s after 0.02 s; with max_velocity = 0.2 m/s the run must stop
+  // with a diagnostic that names the point, the step and the first thing to try for water.
+  BoxScene<2> s = tank(0.3);
+  s.boundaries.clear();
+  s.water_min = {0.3, 0.25};
+  s.water_max = {0.7, 0.45};
+  s.solver.max_velocity = 0.2;
+  Simulation<2> sim = make_box_simulation<2>(s);
+  try {
+    sim.run_stage(dynamic_stage(0.05), nullptr);
+    FAIL() << "water falling for 0.05 s stayed below 0.2 m/s";
+  } catch (const lituya::RunError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("liquid point"), std::string::npos) << m;
+    EXPECT_NE(m.find("liquid_pic_damping_time"), std::string::npos) << m;
+  }
 }
 
 // A box filled with saturated soil, no gravity and no boundaries: soil at rest, water moving

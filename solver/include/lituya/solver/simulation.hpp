@@ -27,11 +27,11 @@
 
 #include "lituya/solver/boundary_conditions.hpp"
 #include "lituya/solver/case_description.hpp"
-#include "lituya/solver/transfer_damping.hpp"
 #include "lituya/solver/liquid_points.hpp"
 #include "lituya/solver/material_points.hpp"
 #include "lituya/solver/mesh.hpp"
 #include "lituya/solver/mohr_coulomb.hpp"
+#include "lituya/solver/transfer_damping.hpp"
 
 namespace lituya::solver {
 
