@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <utility>
 
 #include "lituya/common/input_error.hpp"
 
@@ -164,14 +165,14 @@ SolverSettings read_solver_settings(const TomlTable& t) {
   s.scheme = t.choice_or("scheme", {"musl", "usl"}, "musl") == "musl" ? TransferScheme::kMUSL
                                                                       : TransferScheme::kUSL;
   if (t.has("flip_fraction")) s.flip_fraction = t.number_in_or("flip_fraction", 0.0, 1.0, 0.0);
-  for (const char* key : {"pic_damping_time", "liquid_pic_damping_time"}) {
+  for (auto [key, time] : {std::pair{"pic_damping_time", &s.pic_damping_time},
+                           std::pair{"liquid_pic_damping_time", &s.liquid_pic_damping_time}}) {
     if (!t.has(key)) continue;
     if (s.flip_fraction)
       t.fail(std::string("give either 'flip_fraction' (a share per step) or '") + key +
                  "' (a damping time in seconds), not both",
              key);
-    const double tau = t.number_in_or(key, 1e-12, 1e9, 1.0);
-    (std::string(key) == "pic_damping_time" ? s.pic_damping_time : s.liquid_pic_damping_time) = tau;
+    *time = t.number_in_or(key, 1e-12, 1e9, 1.0);
   }
   s.max_velocity = t.number_in_or("max_velocity", 1e-9, 1e9, s.max_velocity);
   s.volumetric_smoothing = t.boolean_or("volumetric_smoothing", s.volumetric_smoothing);

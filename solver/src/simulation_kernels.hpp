@@ -100,9 +100,8 @@ void locate_all(const Mesh<dim>& mesh, const std::vector<Vec>& position, std::ve
 // What stops a run at a point (update_stress_and_relocate, update_liquid_and_relocate).
 enum class PointFault { kNone, kNotFinite, kTooFast, kLeftMesh };
 
-// The diagnostic of a too fast point or one that left the mesh (a non-finite one names its
-// own fields).
-// remedy: what to try, for a too fast point.
+// The diagnostic of a too fast point (with `remedy`, what to try) or one that left the mesh
+// (a non-finite one names its own fields).
 template <class Vec>
 std::string describe_fault(PointFault fault, const Vec& velocity, double max_velocity,
                            const char* remedy = "reduce the Courant number") {
