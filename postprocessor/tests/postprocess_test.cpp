@@ -50,15 +50,14 @@ std::string with_line(const std::string& text, int line, const std::string& repl
 
 // A 2D case whose column spreads down the 22 degree slope over three outputs: length 0.2,
 // 0.3, 0.5 m and height 0.14, 0.10, 0.06 m, on an untracked bed layer along the whole slope.
-class PostCase : public synthetic::TempFolderTest {
+class PostCase : public synthetic::CaseFolderTest {
  protected:
   static constexpr double kTimes[3] = {0.0, 0.5, 1.0};
   static constexpr double kLength[3] = {0.2, 0.3, 0.5};
   static constexpr double kHeight[3] = {0.14, 0.10, 0.06};
 
   void SetUp() override {
-    TempFolderTest::SetUp();
-    case_ = folder_ / "case";
+    CaseFolderTest::SetUp();
     write_text(case_ / "post.toml", kPostToml);
     write_text(case_ / "materials.toml", kMaterialsToml);
     write_text(case_ / "stages.toml", "format = \"lituya-stages\"\nversion = 1\ndimension = 2\n");
@@ -75,22 +74,6 @@ class PostCase : public synthetic::TempFolderTest {
       pvd.add(kTimes[k], name);
     }
   }
-
-  void expect_input_error(const std::string& post_toml, int line, const std::string& mention) {
-    write_text(case_ / "post.toml", post_toml);
-    try {
-      postprocess(case_, case_ / "post", false);
-      ADD_FAILURE() << "no InputError; expected one at line " << line;
-    } catch (const InputError& e) {
-      EXPECT_EQ(fs::path(e.file()).filename(), "post.toml") << e.what();
-      EXPECT_EQ(e.line(), line) << e.what();
-      EXPECT_NE(std::string(e.what()).find(mention), std::string::npos) << e.what();
-    }
-    // Nothing is written when the input is wrong.
-    EXPECT_FALSE(fs::exists(case_ / "post"));
-  }
-
-  fs::path case_;
 };
 
 TEST_F(PostCase, RunoutWallHeightAndProfilesOfASpreadingColumn) {

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lituya/common/input_error.hpp"
 #include "lituya/common/vtu_writer.hpp"
 #include "lituya/post/postprocess.hpp"
 
@@ -151,6 +152,32 @@ class TempFolderTest : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(folder_); }
   std::filesystem::path folder_;
+};
+
+// A case folder inside the temporary folder, and the check that a wrong post.toml stops
+// `lituya post` with an error at the given line that mentions `mention`, writing nothing.
+class CaseFolderTest : public TempFolderTest {
+ protected:
+  void SetUp() override {
+    TempFolderTest::SetUp();
+    case_ = folder_ / "case";
+  }
+
+  void expect_input_error(const std::string& post_toml, int line, const std::string& mention) {
+    write_text(case_ / "post.toml", post_toml);
+    try {
+      postprocess(case_, case_ / "post", false);
+      ADD_FAILURE() << "no InputError; expected one at line " << line;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::filesystem::path(e.file()).filename(), "post.toml") << e.what();
+      EXPECT_EQ(e.line(), line) << e.what();
+      EXPECT_NE(std::string(e.what()).find(mention), std::string::npos) << e.what();
+    }
+    // Nothing is written when the input is wrong.
+    EXPECT_FALSE(std::filesystem::exists(case_ / "post"));
+  }
+
+  std::filesystem::path case_;
 };
 
 }  // namespace lituya::post::synthetic

@@ -50,15 +50,14 @@ double gaussian(double x, double centre, double height, double width) {
 
 // Still water 0.15 m deep over x in [0, 1.5] with 5 mm points; a 0.02 m crest passes the
 // first gauge (x = 0.45) at t = 0.25 s and a 0.015 m crest the second (x = 0.75) at 0.5 s.
-class WaterCase : public synthetic::TempFolderTest {
+class WaterCase : public synthetic::CaseFolderTest {
  protected:
   static constexpr double kTimes[3] = {0.0, 0.25, 0.5};
   static constexpr double kCrestX[3] = {0.0, 0.45, 0.75};
   static constexpr double kCrestHeight[3] = {0.0, 0.02, 0.015};
 
   void SetUp() override {
-    TempFolderTest::SetUp();
-    case_ = folder_ / "case";
+    CaseFolderTest::SetUp();
     write_text(case_ / "post.toml", kWaterPostToml);
     write_text(case_ / "materials.toml",
                "format = \"lituya-materials\"\nversion = 1\n[[material]]\nname = \"water\"\n");
@@ -76,25 +75,10 @@ class WaterCase : public synthetic::TempFolderTest {
     }
   }
 
-  void expect_input_error(const std::string& post_toml, int line, const std::string& mention) {
-    write_text(case_ / "post.toml", post_toml);
-    try {
-      postprocess(case_, case_ / "post", false);
-      ADD_FAILURE() << "no InputError; expected one at line " << line;
-    } catch (const InputError& e) {
-      EXPECT_EQ(fs::path(e.file()).filename(), "post.toml") << e.what();
-      EXPECT_EQ(e.line(), line) << e.what();
-      EXPECT_NE(std::string(e.what()).find(mention), std::string::npos) << e.what();
-    }
-    EXPECT_FALSE(fs::exists(case_ / "post"));
-  }
-
   bool written(const PostResult& result, const char* name) const {
     return std::find(result.files.begin(), result.files.end(), case_ / "post" / name) !=
            result.files.end();
   }
-
-  fs::path case_;
 };
 
 TEST_F(WaterCase, GaugesLeadingWaveAndSurfaceProfiles) {
@@ -367,10 +351,9 @@ namespace fs = std::filesystem;
 // Still water 0.15 m deep over [0, 1.5] with a 0.02 m crest at x = 0.45, and downstream of it
 // a saturated mound (pore water, porosity 0.4) standing 0.1 m above the water at
 // x in [0.8, 0.9], as a saturated slide that reaches past the shoreline.
-class PoreWaterCase : public synthetic::TempFolderTest {
+class PoreWaterCase : public synthetic::CaseFolderTest {
  protected:
   void write_case(const std::string& extra_key) {
-    case_ = folder_ / "case";
     synthetic::write_text(case_ / "post.toml",
                           "format = \"lituya-post\"\nversion = 1\nstage = \"release\"\n"
                           "gauges = [0.45, 0.85]\nstill_water_level = 0.15\n"
@@ -404,7 +387,6 @@ class PoreWaterCase : public synthetic::TempFolderTest {
     synthetic::write_liquid_cloud(cloud, case_ / "output" / "release_liquid_0000.vtu");
     pvd.add(0.0, "release_liquid_0000.vtu");
   }
-  fs::path case_;
 };
 
 TEST_F(PoreWaterCase, PoreWaterIsNotFreeSurface) {
