@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "lituya/common/error_message.hpp"
 #include "lituya/common/input_error.hpp"
 
 namespace {
@@ -16,15 +17,7 @@ std::filesystem::path write_file(const std::string& name, const std::string& tex
 }
 
 // Runs `f` and returns the InputError message (empty if none was thrown).
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const lituya::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using lituya::input_error_message;
 
 TEST(TomlReader, ReadsTypedValuesAndRanges) {
   auto path = write_file("lituya_toml_ok.toml",
@@ -45,7 +38,7 @@ TEST(TomlReader, UnknownKeyNamesFileAndLine) {
   lituya::TomlDocument doc(path);
   auto root = doc.root();
   root.number("a");
-  std::string msg = error_of([&] { root.finish(); });
+  std::string msg = input_error_message([&] { root.finish(); });
   EXPECT_NE(msg.find("lituya_toml_unknown.toml:3"), std::string::npos) << msg;
   EXPECT_NE(msg.find("frction_angle"), std::string::npos) << msg;
 }
@@ -54,29 +47,30 @@ TEST(TomlReader, WrongTypeAndRangeAndSyntax) {
   auto path = write_file("lituya_toml_bad.toml", "a = \"ten\"\nb = 2.0\n");
   lituya::TomlDocument doc(path);
   auto root = doc.root();
-  std::string msg = error_of([&] { root.number("a"); });
+  std::string msg = input_error_message([&] { root.number("a"); });
   EXPECT_NE(msg.find(":1"), std::string::npos) << msg;
   EXPECT_NE(msg.find("must be a number"), std::string::npos) << msg;
-  msg = error_of([&] { root.number_in("b", 0.0, 1.0); });
+  msg = input_error_message([&] { root.number_in("b", 0.0, 1.0); });
   EXPECT_NE(msg.find(":2"), std::string::npos) << msg;
   EXPECT_NE(msg.find("outside the allowed range"), std::string::npos) << msg;
-  msg = error_of([&] { root.number("c"); });
+  msg = input_error_message([&] { root.number("c"); });
   EXPECT_NE(msg.find("missing required key 'c'"), std::string::npos) << msg;
 
   auto syntax = write_file("lituya_toml_syntax.toml", "a = 1\nb = = 2\n");
-  msg = error_of([&] { lituya::TomlDocument d(syntax); });
+  msg = input_error_message([&] { lituya::TomlDocument d(syntax); });
   EXPECT_NE(msg.find("lituya_toml_syntax.toml:2"), std::string::npos) << msg;
-  msg = error_of([&] { lituya::TomlDocument d("/nonexistent/lituya.toml"); });
+  msg = input_error_message([&] { lituya::TomlDocument d("/nonexistent/lituya.toml"); });
   EXPECT_NE(msg.find("cannot open"), std::string::npos) << msg;
 }
 
 TEST(TomlReader, HeaderFormatAndVersionChecked) {
   auto path = write_file("lituya_toml_header.toml", "format = \"lituya-scene\"\nversion = 9\n");
   lituya::TomlDocument doc(path);
-  std::string msg =
-      error_of([&] { lituya::TomlDocument::check_header(doc.root(), "lituya-scene", 1); });
+  std::string msg = input_error_message(
+      [&] { lituya::TomlDocument::check_header(doc.root(), "lituya-scene", 1); });
   EXPECT_NE(msg.find("version 9 is not supported"), std::string::npos) << msg;
-  msg = error_of([&] { lituya::TomlDocument::check_header(doc.root(), "lituya-stages", 1); });
+  msg = input_error_message(
+      [&] { lituya::TomlDocument::check_header(doc.root(), "lituya-stages", 1); });
   EXPECT_NE(msg.find("expected \"lituya-stages\""), std::string::npos) << msg;
 }
 

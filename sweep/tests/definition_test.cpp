@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "lituya/common/error_message.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/sweep/progress.hpp"
 #include "lituya/sweep/sweep.hpp"
@@ -14,15 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace lituya::sweep;
 
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const lituya::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using lituya::input_error_message;
 
 TEST(SweepDefinition, ValueListsAndRanges) {
   EXPECT_EQ(parse_value_list("10, 14,18"), (std::vector<std::string>{"10", "14", "18"}));
@@ -31,10 +24,12 @@ TEST(SweepDefinition, ValueListsAndRanges) {
   // No roundoff in the values, and STOP is kept when the steps land on it.
   EXPECT_EQ(parse_value_list("0.1:0.3:0.1"), (std::vector<std::string>{"0.1", "0.2", "0.3"}));
   EXPECT_EQ(parse_value_list("musl,usl"), (std::vector<std::string>{"musl", "usl"}));
-  EXPECT_NE(error_of([] { parse_value_list("10,,14"); }).find("--values: empty value"),
+  EXPECT_NE(input_error_message([] { parse_value_list("10,,14"); }).find("--values: empty value"),
             std::string::npos);
-  EXPECT_NE(error_of([] { parse_value_list("22:10:4"); }).find("STEP"), std::string::npos);
-  EXPECT_NE(error_of([] { parse_value_list("0:1:0.0001"); }).find("1000"), std::string::npos);
+  EXPECT_NE(input_error_message([] { parse_value_list("22:10:4"); }).find("STEP"),
+            std::string::npos);
+  EXPECT_NE(input_error_message([] { parse_value_list("0:1:0.0001"); }).find("1000"),
+            std::string::npos);
   EXPECT_EQ(split_list("gauge_max:G1, leading_wave_max,"),
             (std::vector<std::string>{"gauge_max:G1", "leading_wave_max"}));
 }
@@ -69,7 +64,7 @@ TEST(SweepDefinition, SweepFileRoundTrip) {
 
   std::ofstream(file) << "format = \"lituya-sweep\"\nversion = 1\nscene = \"scene.toml\"\n"
                          "parameter = \"mesh.cell_size\"\nvalues = [0.01]\nmesures = []\n";
-  EXPECT_NE(error_of([&] { read_sweep_file(file); }).find("mesures"), std::string::npos);
+  EXPECT_NE(input_error_message([&] { read_sweep_file(file); }).find("mesures"), std::string::npos);
 }
 
 TEST(SweepProgressLine, BarCountsRunsAndEstimatesTheRest) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "lituya/common/error_message.hpp"
 #include "lituya/common/input_error.hpp"
 
 namespace {
@@ -12,15 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace lituya::sweep;
 
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const lituya::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using lituya::input_error_message;
 
 fs::path post_folder(const std::string& name) {
   const fs::path folder = fs::temp_directory_path() / ("lituya_sweep_measures_" + name);
@@ -90,7 +83,7 @@ TEST(Measures, ReadFromThePostTables) {
 
   // A table that was not written names its file.
   const auto wall = parse_measures({"wall_height_final"}, content, "scene.toml");
-  EXPECT_NE(error_of([&] { take_measure(wall[0], post); }).find("wall_height.csv"),
+  EXPECT_NE(input_error_message([&] { take_measure(wall[0], post); }).find("wall_height.csv"),
             std::string::npos);
 }
 
@@ -103,18 +96,18 @@ TEST(Measures, AreCheckedAgainstTheScenePostTable) {
   EXPECT_TRUE(default_measures(PostContent{}).empty());
 
   const std::string no_gauge =
-      error_of([&] { parse_measures({"gauge_max:G9"}, gauges, "scene.toml"); });
+      input_error_message([&] { parse_measures({"gauge_max:G9"}, gauges, "scene.toml"); });
   EXPECT_NE(no_gauge.find("scene.toml:1:"), std::string::npos) << no_gauge;
   EXPECT_NE(no_gauge.find("\"x=0.45\", \"x=0.75\""), std::string::npos) << no_gauge;
-  EXPECT_NE(error_of([&] {
+  EXPECT_NE(input_error_message([&] {
               parse_measures({"front_travel_final"}, gauges, "scene.toml");
             }).find("track_materials"),
             std::string::npos);
-  EXPECT_NE(error_of([&] {
+  EXPECT_NE(input_error_message([&] {
               parse_measures({"gauge_max"}, PostContent{}, "scene.toml");
             }).find("no [post] table"),
             std::string::npos);
-  EXPECT_NE(error_of([&] {
+  EXPECT_NE(input_error_message([&] {
               parse_measures({"runout"}, gauges, "scene.toml");
             }).find("--measure: unknown measure 'runout'"),
             std::string::npos);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "lituya/common/error_message.hpp"
 #include "lituya/common/input_error.hpp"
 
 namespace {
@@ -82,15 +83,7 @@ fs::path write_scene(const std::string& name, const std::string& text = kScene) 
   return folder / "scene.toml";
 }
 
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const lituya::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using lituya::input_error_message;
 
 // The line (1-based) of `text` that holds `needle`.
 int line_with(const std::string& text, const std::string& needle) {
@@ -176,29 +169,32 @@ TEST(SceneEdit, AddsAKeyTheSceneDoesNotSet) {
 TEST(SceneEdit, UnknownPathsNameTheSceneAndWhatExists) {
   const fs::path file = write_scene("unknown");
   const SceneText scene(file);
-  const std::string no_material = error_of([&] { scene.locate("material.beeds.friction_angle"); });
+  const std::string no_material =
+      input_error_message([&] { scene.locate("material.beeds.friction_angle"); });
   EXPECT_NE(no_material.find(file.string()), std::string::npos) << no_material;
   EXPECT_NE(no_material.find("\"beeds\""), std::string::npos) << no_material;
   EXPECT_NE(no_material.find("\"beads\", \"layer\""), std::string::npos) << no_material;
 
-  const std::string no_stage = error_of([&] { scene.locate("stage.relase.courant"); });
+  const std::string no_stage = input_error_message([&] { scene.locate("stage.relase.courant"); });
   EXPECT_NE(no_stage.find("\"gravity\", \"release\""), std::string::npos) << no_stage;
 
-  const std::string no_table = error_of([&] { scene.locate("mesh.refinement.level"); });
+  const std::string no_table = input_error_message([&] { scene.locate("mesh.refinement.level"); });
   EXPECT_NE(no_table.find(file.string() + ":" + std::to_string(line_with(kScene, "[mesh]"))),
             std::string::npos)
       << no_table;
   EXPECT_NE(no_table.find("\"cell_size\""), std::string::npos) << no_table;
 
   // Two boundaries share the group "bed": selecting by it is ambiguous.
-  const std::string ambiguous = error_of([&] { scene.locate("boundary.bed.friction"); });
+  const std::string ambiguous = input_error_message([&] { scene.locate("boundary.bed.friction"); });
   EXPECT_NE(ambiguous.find("\"glued\", \"rough\""), std::string::npos) << ambiguous;
 
-  EXPECT_NE(error_of([&] { scene.locate("material.beads"); }).find("is a table"),
+  EXPECT_NE(input_error_message([&] { scene.locate("material.beads"); }).find("is a table"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { scene.locate("gravity"); }).find("is an array"), std::string::npos);
-  EXPECT_NE(error_of([&] { scene.locate("gravity.2"); }).find("not an index"), std::string::npos);
-  EXPECT_NE(error_of([&] { scene.locate("mesh..cell_size"); }).find("not a key path"),
+  EXPECT_NE(input_error_message([&] { scene.locate("gravity"); }).find("is an array"),
+            std::string::npos);
+  EXPECT_NE(input_error_message([&] { scene.locate("gravity.2"); }).find("not an index"),
+            std::string::npos);
+  EXPECT_NE(input_error_message([&] { scene.locate("mesh..cell_size"); }).find("not a key path"),
             std::string::npos);
 }
 
@@ -206,17 +202,18 @@ TEST(SceneEdit, WrongValueTypesAreInputErrorsAtTheKeyLine) {
   const fs::path file = write_scene("types");
   const SceneText scene(file);
   const KeyTarget phi = scene.locate("material.beads.friction_angle");
-  const std::string not_number = error_of([&] { scene.literals(phi, {"18", "steep"}); });
+  const std::string not_number = input_error_message([&] { scene.literals(phi, {"18", "steep"}); });
   EXPECT_NE(not_number.find(file.string() + ":" + std::to_string(phi.line) + ":"),
             std::string::npos)
       << not_number;
   EXPECT_NE(not_number.find("'steep' is not a number"), std::string::npos) << not_number;
 
   const KeyTarget ppc = scene.locate("mesh.points_per_cell");
-  EXPECT_NE(error_of([&] { scene.literals(ppc, {"4.5"}); }).find("'4.5' is not an integer"),
-            std::string::npos);
+  EXPECT_NE(
+      input_error_message([&] { scene.literals(ppc, {"4.5"}); }).find("'4.5' is not an integer"),
+      std::string::npos);
   const KeyTarget gravity = scene.locate("gravity.1");
-  EXPECT_NE(error_of([&] { scene.literals(gravity, {"true"}); }).find("not a number"),
+  EXPECT_NE(input_error_message([&] { scene.literals(gravity, {"true"}); }).find("not a number"),
             std::string::npos);
 }
 
