@@ -11,6 +11,13 @@ namespace {
 
 using namespace lituya::solver;
 
+// Writes `root` as the preprocessor does and reads it back as the solver does.
+lituya::TomlDocument written_and_read(const toml::table& root, const std::string& name) {
+  const auto path = std::filesystem::temp_directory_path() / name;
+  std::ofstream(path) << root;
+  return lituya::TomlDocument(path);
+}
+
 std::string error_reading_material(const std::string& body) {
   auto path = std::filesystem::temp_directory_path() / "lituya_material_test.toml";
   std::ofstream(path) << body;
@@ -122,14 +129,12 @@ TEST(CaseDescription, ReadsWaterAndMaxPorosity) {
   Material sand = read_material(tables.at(1));
   EXPECT_DOUBLE_EQ(sand.max_porosity, 0.5);
   // Written and read back: the same values (materials.toml is written with to_toml).
-  auto back = std::filesystem::temp_directory_path() / "lituya_water_back.toml";
   toml::table root;
   toml::array list;
   list.push_back(to_toml(water));
   list.push_back(to_toml(sand));
   root.insert("material", list);
-  std::ofstream(back) << root;
-  lituya::TomlDocument doc2(back);
+  const lituya::TomlDocument doc2 = written_and_read(root, "lituya_water_back.toml");
   auto again = doc2.root().tables("material");
   EXPECT_DOUBLE_EQ(read_material(again.at(0)).bulk_modulus, 2.15e7);
   EXPECT_DOUBLE_EQ(read_material(again.at(1)).max_porosity, 0.5);
@@ -193,14 +198,12 @@ TEST(CaseDescription, TractionAndPhaseBoundaries) {
   BoundaryCondition plate = read_boundary(tables.at(1), 2);
   EXPECT_EQ(plate.phase, BoundaryPhase::kSolid);
   // Written and read back.
-  auto back = std::filesystem::temp_directory_path() / "lituya_traction_back.toml";
   toml::table root;
   toml::array list;
   list.push_back(to_toml(load));
   list.push_back(to_toml(plate));
   root.insert("boundary", list);
-  std::ofstream(back) << root;
-  lituya::TomlDocument doc2(back);
+  const lituya::TomlDocument doc2 = written_and_read(root, "lituya_traction_back.toml");
   EXPECT_DOUBLE_EQ(read_boundary(doc2.root().tables("boundary").at(0), 2).traction.at(1), -1.0e4);
   EXPECT_EQ(read_boundary(doc2.root().tables("boundary").at(1), 2).phase, BoundaryPhase::kSolid);
 }
@@ -261,11 +264,9 @@ TEST(CaseDescription, GivenDampingTimesAreWrittenBackAlone) {
   // Written back, a damping time comes without flip_fraction, and reads again.
   SolverSettings s;
   s.pic_damping_time = 0.01;
-  auto back = std::filesystem::temp_directory_path() / "lituya_solver_back.toml";
   toml::table root;
   root.insert("solver", to_toml(s));
-  std::ofstream(back) << root;
-  lituya::TomlDocument doc2(back);
+  const lituya::TomlDocument doc2 = written_and_read(root, "lituya_solver_back.toml");
   const SolverSettings read_back = read_solver_settings(*doc2.root().optional_table("solver"));
   ASSERT_TRUE(read_back.pic_damping_time.has_value());
   EXPECT_DOUBLE_EQ(*read_back.pic_damping_time, 0.01);
