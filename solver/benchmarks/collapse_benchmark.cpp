@@ -37,23 +37,6 @@ Material sand() {
   return m;
 }
 
-Material water() {
-  Material m;
-  m.name = "water";
-  m.model = MaterialModel::kWater;
-  m.liquid_density = 1000;
-  m.bulk_modulus = 2.15e7;
-  m.viscosity = 1e-3;
-  return m;
-}
-
-BoundaryCondition condition(BoundaryType type, double friction = 0) {
-  BoundaryCondition b;
-  b.type = type;
-  b.friction = friction;
-  return b;
-}
-
 template <int dim>
 void run(int segments, int steps, int threads, double cell, bool with_water) {
   const std::size_t memory_before = lituya::current_memory_bytes();
@@ -73,19 +56,19 @@ void run(int segments, int steps, int threads, double cell, bool with_water) {
     // Water up to y = 0.3 m everywhere: the lower part of the column is saturated, the rest
     // of the floor is a pool of free water.
     scene.with_water = true;
-    scene.water = water();
+    scene.water = paper_water();
     scene.water_min = Vec::Zero();
     scene.water_max = scene.domain_size;
     scene.water_max(1) = 0.3;
   }
   scene.gravity.assign(dim, 0.0);
   scene.gravity[1] = -9.81;
-  scene.boundaries = {{"x-", condition(BoundaryType::kRoller)},
-                      {"y-", condition(BoundaryType::kContact, 0.4)},
-                      {"x+", condition(BoundaryType::kRoller)}};
+  scene.boundaries = {{"x-", box_condition(BoundaryType::kRoller)},
+                      {"y-", box_condition(BoundaryType::kContact, 0.4)},
+                      {"x+", box_condition(BoundaryType::kRoller)}};
   if (dim == 3)
-    scene.boundaries.push_back({"z-", condition(BoundaryType::kRoller)}),
-        scene.boundaries.push_back({"z+", condition(BoundaryType::kRoller)});
+    scene.boundaries.push_back({"z-", box_condition(BoundaryType::kRoller)}),
+        scene.boundaries.push_back({"z+", box_condition(BoundaryType::kRoller)});
   Simulation<dim> sim = make_box_simulation<dim>(scene);
   sim.set_threads(threads);
   std::vector<std::string> names;

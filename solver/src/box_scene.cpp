@@ -4,6 +4,23 @@
 
 namespace lituya::solver {
 
+BoundaryCondition box_condition(BoundaryType type, double friction) {
+  BoundaryCondition b;
+  b.type = type;
+  b.friction = friction;
+  return b;
+}
+
+Material paper_water() {
+  Material m;
+  m.name = "water";
+  m.model = MaterialModel::kWater;
+  m.liquid_density = 1000.0;
+  m.bulk_modulus = 2.15e7;
+  m.viscosity = 1.0e-3;
+  return m;
+}
+
 namespace {
 // Points of the standard patterns in barycentric coordinates (equal volumes).
 template <int dim>

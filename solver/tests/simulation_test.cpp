@@ -47,13 +47,6 @@ Stage dynamic_stage(double duration, double courant = 0.5) {
   return s;
 }
 
-BoundaryCondition condition(BoundaryType type, double friction = 0) {
-  BoundaryCondition b;
-  b.type = type;
-  b.friction = friction;
-  return b;
-}
-
 template <int dim>
 Eigen::Matrix<double, dim, 1> mean_displacement(const MaterialPoints<dim>& p) {
   Eigen::Matrix<double, dim, 1> sum = Eigen::Matrix<double, dim, 1>::Zero();
@@ -118,9 +111,9 @@ double sliding_block_velocity(double theta_deg, double mu, double time) {
   scene.material = elastic_material(2000, 5e7, 0.3);
   const double theta = theta_deg * kPi / 180;
   scene.gravity = {9.81 * std::sin(theta), -9.81 * std::cos(theta)};
-  BoundaryCondition glued = condition(BoundaryType::kFixed);
+  BoundaryCondition glued = box_condition(BoundaryType::kFixed);
   glued.name = "glued";
-  BoundaryCondition floor = condition(BoundaryType::kContact, mu);
+  BoundaryCondition floor = box_condition(BoundaryType::kContact, mu);
   floor.name = "floor";
   scene.boundaries = {{"y-", glued}, {"y-", floor}};
   auto sim = make_box_simulation<2>(scene);
@@ -168,9 +161,9 @@ TEST(Simulation, GravityColumnReachesGeostaticStress) {
   const double rho = 2000, nu = 0.3, g = 9.81;
   scene.material = elastic_material(rho, 1e7, nu);
   scene.gravity = {0.0, -g};
-  scene.boundaries = {{"x-", condition(BoundaryType::kRoller)},
-                      {"x+", condition(BoundaryType::kRoller)},
-                      {"y-", condition(BoundaryType::kFixed)}};
+  scene.boundaries = {{"x-", box_condition(BoundaryType::kRoller)},
+                      {"x+", box_condition(BoundaryType::kRoller)},
+                      {"y-", box_condition(BoundaryType::kFixed)}};
   auto sim = make_box_simulation<2>(scene);
   Stage stage;
   stage.name = "gravity";
@@ -206,9 +199,9 @@ TEST(Simulation, CohesionlessSandCollapsesFromZeroStress) {
   scene.block_max = {0.2, 0.2};
   scene.material = sand(30);
   scene.gravity = {0.0, -9.81};
-  scene.boundaries = {{"x-", condition(BoundaryType::kRoller)},
-                      {"y-", condition(BoundaryType::kContact, 0.5)},
-                      {"x+", condition(BoundaryType::kRoller)}};
+  scene.boundaries = {{"x-", box_condition(BoundaryType::kRoller)},
+                      {"y-", box_condition(BoundaryType::kContact, 0.5)},
+                      {"x+", box_condition(BoundaryType::kRoller)}};
   auto sim = make_box_simulation<2>(scene);
   Stage stage = dynamic_stage(0.3);
   stage.boundaries = {"x-", "y-", "x+"};
@@ -231,8 +224,8 @@ TEST(Simulation, TwoThreadsGiveTheSameAnswerAsOne) {
     scene.block_max = {0.2, 0.2};
     scene.material = sand(25);
     scene.gravity = {0.0, -9.81};
-    scene.boundaries = {{"x-", condition(BoundaryType::kRoller)},
-                        {"y-", condition(BoundaryType::kContact, 0.4)}};
+    scene.boundaries = {{"x-", box_condition(BoundaryType::kRoller)},
+                        {"y-", box_condition(BoundaryType::kContact, 0.4)}};
     auto sim = make_box_simulation<2>(scene);
     sim.set_threads(threads);
     Stage stage = dynamic_stage(0.05);
@@ -276,7 +269,7 @@ TEST(Simulation, UnstableRunStopsWithDiagnostic) {
   scene.block_max = {1.0, 0.5};
   scene.material = elastic_material(1000, 1e7, 0.3);
   scene.gravity = {0.0, -9.81};
-  scene.boundaries = {{"y-", condition(BoundaryType::kFixed)}};
+  scene.boundaries = {{"y-", box_condition(BoundaryType::kFixed)}};
   auto sim = make_box_simulation<2>(scene);
   Stage stage = dynamic_stage(1.0, /*courant=*/1.0);
   stage.boundaries = {"y-"};
@@ -308,9 +301,9 @@ Simulation<2> loaded_column(double ramp_time) {
   scene.block_max = {0.1, 1.0};
   scene.material = elastic_material(1500.0, 1.0e6, 0.3);
   scene.gravity = {0.0, 0.0};
-  scene.boundaries = {{"x-", condition(BoundaryType::kRoller)},
-                      {"x+", condition(BoundaryType::kRoller)},
-                      {"y-", condition(BoundaryType::kFixed)}};
+  scene.boundaries = {{"x-", box_condition(BoundaryType::kRoller)},
+                      {"x+", box_condition(BoundaryType::kRoller)},
+                      {"y-", box_condition(BoundaryType::kFixed)}};
   Simulation<2> sim = make_box_simulation<2>(scene);
   BoundaryCondition load;
   load.type = BoundaryType::kTraction;
@@ -401,9 +394,9 @@ double collapse_runout(double courant, std::optional<double> pic_damping_time) {
   scene.material = sand(10.0);  // weak, so that it runs out
   scene.gravity = {0.0, -9.81};
   scene.solver.pic_damping_time = pic_damping_time;
-  scene.boundaries = {{"x-", condition(BoundaryType::kRoller)},
-                      {"y-", condition(BoundaryType::kContact, 0.4)},
-                      {"x+", condition(BoundaryType::kRoller)}};
+  scene.boundaries = {{"x-", box_condition(BoundaryType::kRoller)},
+                      {"y-", box_condition(BoundaryType::kContact, 0.4)},
+                      {"x+", box_condition(BoundaryType::kRoller)}};
   Simulation<2> sim = make_box_simulation<2>(scene);
   Stage stage = dynamic_stage(0.3, courant);
   stage.boundaries = {"x-", "y-", "x+"};

@@ -14,16 +14,6 @@ namespace {
 
 using namespace lituya::solver;
 
-Material water() {
-  Material m;
-  m.name = "water";
-  m.model = MaterialModel::kWater;
-  m.liquid_density = 1000.0;
-  m.bulk_modulus = 2.15e7;
-  m.viscosity = 1.0e-3;
-  return m;
-}
-
 Material soil(double grain_diameter) {
   Material m;
   m.name = "sand";
@@ -47,12 +37,6 @@ Stage dynamic_stage(double duration, double courant = 0.5) {
   return s;
 }
 
-BoundaryCondition roller() {
-  BoundaryCondition b;
-  b.type = BoundaryType::kRoller;
-  return b;
-}
-
 // A 2D tank 1 m wide with still water `depth` deep, roller walls and bottom; no solid points.
 BoxScene<2> tank(double depth) {
   BoxScene<2> s;
@@ -63,10 +47,11 @@ BoxScene<2> tank(double depth) {
   s.material = soil(0.002);
   s.gravity = {0.0, -9.81};
   s.with_water = true;
-  s.water = water();
+  s.water = paper_water();
   s.water_min = {0.0, 0.0};
   s.water_max = {1.0, depth};
-  for (const char* side : {"x-", "x+", "y-"}) s.boundaries.push_back({side, roller()});
+  for (const char* side : {"x-", "x+", "y-"})
+    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
   return s;
 }
 
@@ -146,7 +131,7 @@ BoxScene<2> seepage_box(double grain_diameter, double relative_speed) {
   s.material = soil(grain_diameter);
   s.gravity = {0.0, 0.0};
   s.with_water = true;
-  s.water = water();
+  s.water = paper_water();
   s.water_min = s.block_min;
   s.water_max = s.block_max;
   s.water_velocity = {relative_speed, 0.0};
@@ -232,10 +217,11 @@ TEST(TwoPhase, SaturatedBedUnderWaterStaysAtRest) {
   s.gravity = {0.0, -9.81};
   s.k0 = 0.5;
   s.with_water = true;
-  s.water = water();
+  s.water = paper_water();
   s.water_min = {0.0, 0.0};
   s.water_max = {0.4, 0.3};
-  for (const char* side : {"x-", "x+", "y-"}) s.boundaries.push_back({side, roller()});
+  for (const char* side : {"x-", "x+", "y-"})
+    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
   Simulation<2> sim = make_box_simulation<2>(s);
   sim.run_stage(dynamic_stage(0.3), nullptr);
   const double buoyant = 0.6 * 2650.0 - 0.6 * 1000.0;
@@ -364,10 +350,11 @@ TEST(TwoPhase, StillWaterIn3DStaysStill) {
   s.material = soil(0.002);
   s.gravity = {0.0, -9.81, 0.0};
   s.with_water = true;
-  s.water = water();
+  s.water = paper_water();
   s.water_min = Eigen::Vector3d::Zero();
   s.water_max = {0.3, 0.2, 0.1};
-  for (const char* side : {"x-", "x+", "y-", "z-", "z+"}) s.boundaries.push_back({side, roller()});
+  for (const char* side : {"x-", "x+", "y-", "z-", "z+"})
+    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
   Simulation<3> sim = make_box_simulation<3>(s);
   Stage stage = dynamic_stage(0.2);
   stage.boundaries = {"x-", "x+", "y-", "z-", "z+"};

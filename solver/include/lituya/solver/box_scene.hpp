@@ -41,6 +41,12 @@ struct BoxScene {
 template <int dim>
 Simulation<dim> make_box_simulation(const BoxScene<dim>& scene);
 
+// A boundary condition of `type` for a box side (Coulomb `friction` for kContact).
+BoundaryCondition box_condition(BoundaryType type, double friction = 0);
+
+// Water as in the paper's cases: rho_w = 1000 kg/m3, K_w = 2.15e7 Pa, mu = 1e-3 Pa s.
+Material paper_water();
+
 // Boundary facets (faces with no neighbour) whose nodes all satisfy `on_side`.
 template <int dim, class Predicate>
 std::vector<std::array<int, dim>> boundary_facets(const Mesh<dim>& mesh, Predicate on_side) {
