@@ -93,7 +93,8 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
 
 template <int dim>
 void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
-                       std::vector<Eigen::Matrix<double, dim, 1>>& velocity) {
+                       std::vector<Eigen::Matrix<double, dim, 1>>& velocity,
+                       const std::vector<Eigen::Matrix<double, dim, 1>>* frictionless) {
   using Vec = Eigen::Matrix<double, dim, 1>;
   for (int pass = 0; pass < 2; ++pass) {
     for (const NodalConstraint<dim>* c : active) {
@@ -121,8 +122,13 @@ void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
             Vec tangential = v - approach * n;
             const double slip = tangential.norm();
             // Coulomb: the tangential impulse is at most mu times the normal impulse, which
-            // is m * approach; stick if that is enough to stop the slip.
-            const double reduction = c->friction * approach;
+            // is m * approach; stick if that is enough to stop the slip. Only the effective
+            // part of the normal impulse (without what frictionless forces pressed into the
+            // wall) bounds the friction.
+            const double effective =
+                frictionless ? std::max(0.0, approach - (*frictionless)[c->nodes[k]].dot(n))
+                             : approach;
+            const double reduction = c->friction * effective;
             v = slip > reduction ? Vec(tangential * (1.0 - reduction / slip)) : Vec::Zero();
           }
           break;
@@ -140,8 +146,10 @@ template NodalConstraint<3> make_constraint<3>(const BoundaryCondition&,
                                                const std::vector<std::array<int, 3>>&,
                                                const Mesh<3>&, const std::string&);
 template void apply_constraints<2>(const std::vector<const NodalConstraint<2>*>&,
-                                   std::vector<Eigen::Vector2d>&);
+                                   std::vector<Eigen::Vector2d>&,
+                                   const std::vector<Eigen::Vector2d>*);
 template void apply_constraints<3>(const std::vector<const NodalConstraint<3>*>&,
-                                   std::vector<Eigen::Vector3d>&);
+                                   std::vector<Eigen::Vector3d>&,
+                                   const std::vector<Eigen::Vector3d>*);
 
 }  // namespace lituya::solver

@@ -33,37 +33,31 @@ namespace lituya::solver {
 
 template <int dim>
 void Simulation<dim>::scatter_liquid(const std::vector<double>& point_values,
-                                     std::vector<double>& nodal) const {
-  // nodal_i = sum_q V_q N_i(x_q) point_values_q
-  std::fill(nodal.begin(), nodal.end(), 0.0);
-  const std::size_t n_liquid = liquid_.size();
-  auto add = [&](std::size_t q, auto accumulate) {
-    const auto& nodes = mesh_.cell_nodes[liquid_.cell[q]];
-    const double w = liquid_.volume[q] * point_values[q];
-    for (int i = 0; i <= dim; ++i) accumulate(nodal[nodes[i]], liquid_shape_[q](i) * w);
-  };
-  if (threads_ == 1) {
-    for (std::size_t q = 0; q < n_liquid; ++q)
-      add(q, [](double& target, double value) { target += value; });
-  } else {
-#pragma omp parallel for num_threads(threads_) schedule(static)
-    for (std::size_t q = 0; q < n_liquid; ++q)
-      add(q, [](double& target, double value) {
-#pragma omp atomic
-        target += value;
+                                     std::vector<double>& nodal) {
+  // nodal_i = sum_q V_q N_i(x_q) point_values_q, with per-thread sums added in a fixed order
+  // (nodal_scatter.hpp): the projection runs inside the time loop, so its rounding must not
+  // depend on the threads' timing.
+  const LiquidPoints<dim>& liquid = water_.points;
+  projection_.sums.run(
+      liquid.size(), [](detail::ScalarSums& s) { return std::tie(s.value); },
+      [&](detail::ScalarSums& s, std::size_t q) {
+        const auto& nodes = mesh_.cell_nodes[liquid.cell[q]];
+        const double w = liquid.volume[q] * point_values[q];
+        for (int i = 0; i <= dim; ++i) s.value[nodes[i]] += water_.shape[q](i) * w;
       });
-  }
+  nodal = projection_.sums.sums().value;
 }
 
 template <int dim>
 void Simulation<dim>::gather_liquid(const std::vector<double>& nodal,
                                     std::vector<double>& point_values) const {
-  const std::size_t n_liquid = liquid_.size();
+  const LiquidPoints<dim>& liquid = water_.points;
+  const std::size_t n_liquid = liquid.size();
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t q = 0; q < n_liquid; ++q) {
-    const auto& nodes = mesh_.cell_nodes[liquid_.cell[q]];
+    const auto& nodes = mesh_.cell_nodes[liquid.cell[q]];
     double value = 0;
-    for (int i = 0; i <= dim; ++i) value += liquid_shape_[q](i) * nodal[nodes[i]];
+    for (int i = 0; i <= dim; ++i) value += water_.shape[q](i) * nodal[nodes[i]];
     point_values[q] = value;
   }
 }
@@ -77,11 +71,12 @@ int Simulation<dim>::project_liquid_pressure() {
     for (auto* v : {&s.rhs, &s.diagonal, &s.residual, &s.preconditioned, &s.direction, &s.product})
       v->assign(n_nodes, 0.0);
   }
-  s.point_values.resize(liquid_.size());
+  LiquidPoints<dim>& liquid = water_.points;
+  s.point_values.resize(liquid.size());
   // Lumped diagonal (sum_q V_q N_i) and right-hand side.
   std::fill(s.point_values.begin(), s.point_values.end(), 1.0);
   scatter_liquid(s.point_values, s.diagonal);
-  scatter_liquid(liquid_.pressure, s.rhs);
+  scatter_liquid(liquid.pressure, s.rhs);
   auto apply = [&](const std::vector<double>& x, std::vector<double>& y) {
     gather_liquid(x, s.point_values);
     scatter_liquid(s.point_values, y);
@@ -129,19 +124,19 @@ int Simulation<dim>::project_liquid_pressure() {
       s.direction[i] = s.preconditioned[i] + beta * s.direction[i];
   }
   gather_liquid(s.solution, s.point_values);
-  const std::size_t n_liquid = liquid_.size();
+  const std::size_t n_liquid = liquid.size();
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t q = 0; q < n_liquid; ++q) {
-    const MaterialModelData& water = materials_[liquid_.material[q]];
-    liquid_.pressure[q] = std::max(0.0, s.point_values[q]);
-    liquid_.volume[q] =
-        liquid_.mass[q] / (water.liquid_density * (1.0 + liquid_.pressure[q] / water.bulk_modulus));
+    const MaterialModelData& water = materials_[liquid.material[q]];
+    liquid.pressure[q] = std::max(0.0, s.point_values[q]);
+    liquid.volume[q] =
+        liquid.mass[q] / (water.liquid_density * (1.0 + liquid.pressure[q] / water.bulk_modulus));
   }
   return iteration;
 }
 
-template void Simulation<2>::scatter_liquid(const std::vector<double>&, std::vector<double>&) const;
-template void Simulation<3>::scatter_liquid(const std::vector<double>&, std::vector<double>&) const;
+template void Simulation<2>::scatter_liquid(const std::vector<double>&, std::vector<double>&);
+template void Simulation<3>::scatter_liquid(const std::vector<double>&, std::vector<double>&);
 template void Simulation<2>::gather_liquid(const std::vector<double>&, std::vector<double>&) const;
 template void Simulation<3>::gather_liquid(const std::vector<double>&, std::vector<double>&) const;
 template int Simulation<2>::project_liquid_pressure();

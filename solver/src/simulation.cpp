@@ -35,10 +35,10 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
                             std::vector<NodalConstraint<dim>> constraints, LiquidPoints<dim> liquid)
     : description_(std::move(description)),
       mesh_(std::move(mesh)),
-      points_(std::move(points)),
       constraints_(std::move(constraints)),
-      has_liquid_(!liquid.empty()),
-      liquid_(std::move(liquid)) {
+      has_liquid_(!liquid.empty()) {
+  solid_.points = std::move(points);
+  water_.points = std::move(liquid);
   for (int d = 0; d < dim; ++d) gravity_(d) = description_.gravity.at(d);
   damping_ = resolve_transfer_damping(
       description_.solver, characteristic_cell_size(mesh_.cell_volume, dim), gravity_.norm());
@@ -68,18 +68,11 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
     data.wave_speed = std::sqrt(data.elastic.constrained_modulus() / m.dry_density());
     materials_.push_back(std::move(data));
   }
-  const std::size_t n_nodes = mesh_.node_count();
-  grid_.mass.assign(n_nodes, 0.0);
-  grid_.momentum.assign(n_nodes, Vec::Zero());
-  grid_.force.assign(n_nodes, Vec::Zero());
-  node_velocity_.assign(n_nodes, Vec::Zero());
-  node_acceleration_.assign(n_nodes, Vec::Zero());
-  if (volumetric_smoothing_) {
-    node_volumetric_strain_.assign(n_nodes, 0.0);
-    node_volume_.assign(n_nodes, 0.0);
-    point_volumetric_strain_.assign(points_.size(), 0.0);
-  }
-  locate_all<dim>(mesh_, points_.position, points_.cell, points_.id, shape_,
+  solid_.damping = damping_.solid;
+  water_.damping = damping_.liquid;
+  set_threads(1);
+  if (volumetric_smoothing_) point_volumetric_strain_.assign(solid_.points.size(), 0.0);
+  locate_all<dim>(mesh_, solid_.points.position, solid_.points.cell, solid_.points.id, solid_.shape,
                   description_.points_file, "point");
   if (has_liquid_) setup_liquid();
   next_time_step_ = stable_time_step(1.0);
@@ -87,29 +80,29 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
 
 template <int dim>
 double Simulation<dim>::porosity(std::size_t p) const {
-  const double rho_s = materials_[points_.material[p]].solid_density;
-  return 1.0 - points_.mass[p] / (rho_s * points_.volume[p]);
+  const MaterialPoints<dim>& points = solid_.points;
+  const double rho_s = materials_[points.material[p]].solid_density;
+  return 1.0 - points.mass[p] / (rho_s * points.volume[p]);
 }
 
 template <int dim>
 void Simulation<dim>::set_threads(int threads) {
+  // Per-thread nodal buffers (nodal_scatter.hpp): a dry case allocates none for water.
   threads_ = std::max(1, threads);
-  thread_buffers_.resize(threads_ - 1);
-  for (NodalBuffer& b : thread_buffers_) {
-    b.mass.assign(mesh_.node_count(), 0.0);
-    b.momentum.assign(mesh_.node_count(), Vec::Zero());
-    b.force.assign(mesh_.node_count(), Vec::Zero());
-  }
+  const std::size_t n_nodes = mesh_.node_count();
+  solid_.allocate_nodes(threads_, n_nodes);
+  if (volumetric_smoothing_) smoothing_.allocate(threads_, n_nodes);
   if (has_liquid_) {
-    liquid_thread_buffers_.resize(threads_ - 1);
-    for (LiquidBuffer& b : liquid_thread_buffers_) b.assign(mesh_.node_count());
+    water_.allocate_nodes(threads_, n_nodes);
+    coupling_.allocate(threads_, n_nodes);
+    projection_.sums.allocate(threads_, n_nodes);
   }
 }
 
 template <int dim>
 void Simulation<dim>::activate_boundaries(const std::vector<std::string>& names) {
-  active_constraints_.clear();
-  active_liquid_constraints_.clear();
+  solid_.constraints.clear();
+  water_.constraints.clear();
   active_tractions_.clear();
   for (const std::string& name : names)
     for (std::size_t i = 0; i < description_.boundaries.size(); ++i) {
@@ -118,8 +111,8 @@ void Simulation<dim>::activate_boundaries(const std::vector<std::string>& names)
       if (c->type == BoundaryType::kTraction)
         active_tractions_.push_back(c);
       else {
-        if (c->phase != BoundaryPhase::kLiquid) active_constraints_.push_back(c);
-        if (c->phase != BoundaryPhase::kSolid) active_liquid_constraints_.push_back(c);
+        if (c->phase != BoundaryPhase::kLiquid) solid_.constraints.push_back(c);
+        if (c->phase != BoundaryPhase::kSolid) water_.constraints.push_back(c);
       }
     }
 }
@@ -134,8 +127,10 @@ void Simulation<dim>::apply_tractions() {
     // A load ramp: the traction rises linearly from zero over ramp_time, so that a load does
     // not strike like a hammer (a sudden load rings as an undrained wave, see Terzaghi).
     const double factor = c->ramp_time > 0 ? std::min(1.0, stage_time_ / c->ramp_time) : 1.0;
-    std::vector<double>& mass = liquid ? liquid_grid_.mass : grid_.mass;
-    std::vector<Vec>& force = liquid ? liquid_grid_.force : grid_.force;
+    auto& sums =
+        liquid ? static_cast<detail::PhaseSums<dim>&>(water_.nodal.sums()) : solid_.nodal.sums();
+    std::vector<double>& mass = sums.mass;
+    std::vector<Vec>& force = sums.force;
     for (std::size_t k = 0; k < c->nodes.size(); ++k)
       if (mass[c->nodes[k]] > kMassFloor) force[c->nodes[k]] += factor * c->force[k];
   }
@@ -143,20 +138,23 @@ void Simulation<dim>::apply_tractions() {
 
 template <int dim>
 double Simulation<dim>::stable_time_step(double courant) const {
+  // A minimum does not depend on the order of the comparisons: the reduction is exact.
   double dt = std::numeric_limits<double>::max();
-  const std::size_t n = points_.size();
+  const MaterialPoints<dim>& points = solid_.points;
+  const LiquidPoints<dim>& liquid = water_.points;
+  const std::size_t n = points.size();
 #pragma omp parallel for num_threads(threads_) reduction(min : dt) schedule(static)
   for (std::size_t p = 0; p < n; ++p) {
-    const double speed = materials_[points_.material[p]].wave_speed + points_.velocity[p].norm();
-    dt = std::min(dt, mesh_.cell_min_height[points_.cell[p]] / speed);
+    const double speed = materials_[points.material[p]].wave_speed + points.velocity[p].norm();
+    dt = std::min(dt, mesh_.cell_min_height[points.cell[p]] / speed);
   }
-  const std::size_t n_liquid = liquid_.size();
+  const std::size_t n_liquid = liquid.size();
 #pragma omp parallel for num_threads(threads_) reduction(min : dt) schedule(static)
   for (std::size_t q = 0; q < n_liquid; ++q) {
-    const MaterialModelData& water = materials_[liquid_.material[q]];
-    const double h = mesh_.cell_min_height[liquid_.cell[q]];
+    const MaterialModelData& water = materials_[liquid.material[q]];
+    const double h = mesh_.cell_min_height[liquid.cell[q]];
     // Sound speed plus the viscous (diffusive) limit 2 mu / (rho h).
-    const double speed = water.wave_speed + liquid_.velocity[q].norm() +
+    const double speed = water.wave_speed + liquid.velocity[q].norm() +
                          2.0 * water.viscosity / (water.liquid_density * h);
     dt = std::min(dt, h / speed);
   }
@@ -165,55 +163,8 @@ double Simulation<dim>::stable_time_step(double courant) const {
 
 template <int dim>
 void Simulation<dim>::points_to_nodes(Transfer what) {
-  const bool with_force = what == Transfer::kMassMomentumForce;
-  const std::size_t n_points = points_.size();
-  const std::size_t n_nodes = mesh_.node_count();
-#pragma omp parallel num_threads(threads_)
-  {
-    const int t = omp_get_thread_num();
-    NodalBuffer& b = t == 0 ? grid_ : thread_buffers_[t - 1];
-    if (with_force) {
-      std::fill(b.mass.begin(), b.mass.end(), 0.0);
-      std::fill(b.force.begin(), b.force.end(), Vec::Zero());
-    }
-    std::fill(b.momentum.begin(), b.momentum.end(), Vec::Zero());
-#pragma omp for schedule(static)
-    for (std::size_t p = 0; p < n_points; ++p) {
-      const int cell = points_.cell[p];
-      const auto& nodes = mesh_.cell_nodes[cell];
-      const Shape& n = shape_[p];
-      const double m = points_.mass[p];
-      const Vec momentum = m * points_.velocity[p];
-      if (with_force) {
-        const auto& grad = mesh_.cell_shape_gradient[cell];
-        const double v = points_.volume[p];
-        const Voigt6& sigma = points_.stress[p];
-        const Vec weight = m * gravity_;
-        for (int i = 0; i <= dim; ++i) {
-          const int node = nodes[i];
-          b.mass[node] += n(i) * m;
-          b.momentum[node] += n(i) * momentum;
-          // Internal force -V sigma . grad N (weak form of div sigma, eq. 11) and gravity.
-          b.force[node] += n(i) * weight - v * stress_dot(sigma, grad[i]);
-        }
-      } else {
-        for (int i = 0; i <= dim; ++i) b.momentum[nodes[i]] += n(i) * momentum;
-      }
-    }
-    // Sum the other threads' buffers into the grid, in a fixed order (deterministic for a
-    // given thread count).
-    if (threads_ > 1) {
-#pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n_nodes; ++i)
-        for (const NodalBuffer& other : thread_buffers_) {
-          if (with_force) {
-            grid_.mass[i] += other.mass[i];
-            grid_.force[i] += other.force[i];
-          }
-          grid_.momentum[i] += other.momentum[i];
-        }
-    }
-  }
+  // The solid's own stress is the effective stress sigma' (eq. 19).
+  detail::scatter_to_nodes(solid_, mesh_, gravity_, solid_.points.stress, what, [](auto&&...) {});
 }
 
 template <int dim>
@@ -223,63 +174,28 @@ void Simulation<dim>::nodal_update(double dt, double damping) {
     return;
   }
   const std::size_t n_nodes = mesh_.node_count();
+  const detail::PhaseSums<dim>& sums = solid_.nodal.sums();
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i) {
-    const double m = grid_.mass[i];
+    const double m = sums.mass[i];
     if (m <= kMassFloor) {
-      node_velocity_[i].setZero();
-      node_acceleration_[i].setZero();
+      solid_.node_velocity[i].setZero();
+      solid_.node_acceleration[i].setZero();
       continue;
     }
-    const Vec velocity = grid_.momentum[i] / m;
-    Vec force = grid_.force[i];
-    if (damping > 0) {
-      // Local (Cundall) damping: a force opposing the velocity, proportional to the
-      // unbalanced force, that vanishes at equilibrium.
-      for (int d = 0; d < dim; ++d) {
-        const double sign = velocity(d) > 0 ? 1.0 : (velocity(d) < 0 ? -1.0 : 0.0);
-        force(d) -= damping * std::abs(force(d)) * sign;
-      }
-    }
-    node_velocity_[i] = velocity + dt * force / m;
-    node_acceleration_[i] = velocity;  // old velocity, finished below
+    const Vec velocity = sums.momentum[i] / m;
+    Vec force = sums.force[i];
+    apply_local_damping(force, velocity, damping);
+    solid_.node_velocity[i] = velocity + dt * force / m;
+    solid_.node_acceleration[i] = velocity;  // the old velocity, finished below
   }
-  apply_constraints<dim>(active_constraints_, node_velocity_);
-#pragma omp parallel for num_threads(threads_) schedule(static)
-  for (std::size_t i = 0; i < n_nodes; ++i)
-    node_acceleration_[i] = (node_velocity_[i] - node_acceleration_[i]) / dt;
-}
-
-template <int dim>
-void Simulation<dim>::nodes_to_points(double dt) {
-  const std::size_t n_points = points_.size();
-  const double flip = damping_.solid.flip_share(dt);
-#pragma omp parallel for num_threads(threads_) schedule(static)
-  for (std::size_t p = 0; p < n_points; ++p) {
-    const auto& nodes = mesh_.cell_nodes[points_.cell[p]];
-    const Shape& n = shape_[p];
-    Vec acceleration = Vec::Zero(), velocity = Vec::Zero();
-    for (int i = 0; i <= dim; ++i) {
-      acceleration += n(i) * node_acceleration_[nodes[i]];
-      velocity += n(i) * node_velocity_[nodes[i]];
-    }
-    // FLIP keeps the point's own velocity (little numerical dissipation), PIC takes the
-    // grid's (stable, dissipative); the blend trades one against the other.
-    points_.velocity[p] = flip * (points_.velocity[p] + dt * acceleration) + (1 - flip) * velocity;
-    points_.position[p] += dt * velocity;
-    points_.displacement[p] += dt * velocity;
-  }
+  finish_nodal_update(solid_, dt, threads_);
 }
 
 template <int dim>
 void Simulation<dim>::remap_momentum() {
-  points_to_nodes(Transfer::kMomentum);
-  const std::size_t n_nodes = mesh_.node_count();
-#pragma omp parallel for num_threads(threads_) schedule(static)
-  for (std::size_t i = 0; i < n_nodes; ++i) {
-    node_velocity_[i] = velocity_from_momentum(grid_.momentum[i], grid_.mass[i]);
-  }
-  apply_constraints<dim>(active_constraints_, node_velocity_);
+  remap_velocity(solid_, mesh_, threads_);
+  apply_constraints<dim>(solid_.constraints, solid_.node_velocity);
   if (has_liquid_) remap_liquid_momentum();
 }
 
@@ -289,43 +205,29 @@ void Simulation<dim>::smooth_volumetric_strain(double dt) {
   // more cells than nodes, isochoric flow over-constrains the mesh (locking). Averaging it
   // at the nodes over the surrounding material (weighted by point volume) and interpolating
   // back leaves one volumetric constraint per node instead of per cell.
-  const std::size_t n_points = points_.size();
-  std::fill(node_volumetric_strain_.begin(), node_volumetric_strain_.end(), 0.0);
-  std::fill(node_volume_.begin(), node_volume_.end(), 0.0);
-  auto cell_volumetric_strain = [&](std::size_t p) {
-    const int cell = points_.cell[p];
-    const auto& nodes = mesh_.cell_nodes[cell];
-    const auto& grad = mesh_.cell_shape_gradient[cell];
-    double divergence = 0;
-    for (int i = 0; i <= dim; ++i) divergence += node_velocity_[nodes[i]].dot(grad[i]);
-    return divergence * dt;
-  };
-  if (threads_ == 1) {
-    for (std::size_t p = 0; p < n_points; ++p) {
-      const double weighted = points_.volume[p] * cell_volumetric_strain(p);
-      for (int node : mesh_.cell_nodes[points_.cell[p]]) {
-        node_volumetric_strain_[node] += weighted;
-        node_volume_[node] += points_.volume[p];
-      }
-    }
-  } else {
-#pragma omp parallel for num_threads(threads_) schedule(static)
-    for (std::size_t p = 0; p < n_points; ++p) {
-      const double weighted = points_.volume[p] * cell_volumetric_strain(p);
-      for (int node : mesh_.cell_nodes[points_.cell[p]]) {
-#pragma omp atomic
-        node_volumetric_strain_[node] += weighted;
-#pragma omp atomic
-        node_volume_[node] += points_.volume[p];
-      }
-    }
-  }
+  const MaterialPoints<dim>& points = solid_.points;
+  const std::size_t n_points = points.size();
+  smoothing_.run(
+      n_points, [](SmoothingSums& sums) { return std::tie(sums.volumetric_strain, sums.volume); },
+      [&](SmoothingSums& sums, std::size_t p) {
+        const int cell = points.cell[p];
+        const auto& nodes = mesh_.cell_nodes[cell];
+        const auto& grad = mesh_.cell_shape_gradient[cell];
+        double divergence = 0;
+        for (int i = 0; i <= dim; ++i) divergence += solid_.node_velocity[nodes[i]].dot(grad[i]);
+        const double weighted = points.volume[p] * divergence * dt;
+        for (int node : nodes) {
+          sums.volumetric_strain[node] += weighted;
+          sums.volume[node] += points.volume[p];
+        }
+      });
+  const SmoothingSums& sums = smoothing_.sums();
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t p = 0; p < n_points; ++p) {
-    const auto& nodes = mesh_.cell_nodes[points_.cell[p]];
+    const auto& nodes = mesh_.cell_nodes[points.cell[p]];
     double smoothed = 0;
     for (int i = 0; i <= dim; ++i)
-      smoothed += shape_[p](i) * node_volumetric_strain_[nodes[i]] / node_volume_[nodes[i]];
+      smoothed += solid_.shape[p](i) * sums.volumetric_strain[nodes[i]] / sums.volume[nodes[i]];
     point_volumetric_strain_[p] = smoothed;
   }
 }
@@ -333,72 +235,57 @@ void Simulation<dim>::smooth_volumetric_strain(double dt) {
 template <int dim>
 void Simulation<dim>::update_stress_and_relocate(double dt) {
   using Gradient = Eigen::Matrix<double, dim, dim>;
-  const std::size_t n_points = points_.size();
-  long bad_point = -1;
-  int bad_kind = 0;  // 1 = non-finite, 2 = too fast, 3 = left the mesh
+  MaterialPoints<dim>& points = solid_.points;
+  const std::size_t n_points = points.size();
+  FirstFault fault;
   double dt_next = std::numeric_limits<double>::max();
 #pragma omp parallel for num_threads(threads_) schedule(static) reduction(min : dt_next)
   for (std::size_t p = 0; p < n_points; ++p) {
-    const int cell = points_.cell[p];
+    const int cell = points.cell[p];
     const auto& nodes = mesh_.cell_nodes[cell];
     const auto& grad = mesh_.cell_shape_gradient[cell];
     Gradient l = Gradient::Zero();  // velocity gradient dv/dx
-    for (int i = 0; i <= dim; ++i) l.noalias() += node_velocity_[nodes[i]] * grad[i].transpose();
+    for (int i = 0; i <= dim; ++i)
+      l.noalias() += solid_.node_velocity[nodes[i]] * grad[i].transpose();
     Voigt6 strain = strain_increment(l, dt);
     if (volumetric_smoothing_) {
       // Replace the cell's volumetric part by the smoothed one (in-plane in 2D).
       const double correction = (point_volumetric_strain_[p] - l.trace() * dt) / dim;
       for (int d = 0; d < dim; ++d) strain(d) += correction;
     }
-    Voigt6& sigma = points_.stress[p];
+    Voigt6& sigma = points.stress[p];
     rotate_stress(sigma, l, dt);
-    const MaterialModelData& material = materials_[points_.material[p]];
+    const MaterialModelData& material = materials_[points.material[p]];
     if (material.max_porosity < 1.0 && porosity(p) >= material.max_porosity)
       sigma.setZero();  // n > n_max: grains separated, no effective stress (section 2.3)
     else if (material.model == MaterialModel::kMohrCoulomb)
-      points_.plastic_strain[p] += material.mohr_coulomb->update(sigma, strain);
+      points.plastic_strain[p] += material.mohr_coulomb->update(sigma, strain);
     else
       elastic_update(material.elastic, sigma, strain);
-    points_.volume[p] *= 1.0 + strain(0) + strain(1) + strain(2);
+    points.volume[p] *= 1.0 + strain(0) + strain(1) + strain(2);
 
-    const double speed = points_.velocity[p].norm();
-    int kind = 0;
-    if (!std::isfinite(speed) || !sigma.allFinite())
-      kind = 1;
-    else if (speed > max_velocity_)
-      kind = 2;
-    else {
-      const int found = mesh_.locate(cell, points_.position[p], shape_[p]);
-      if (found < 0)
-        kind = 3;
-      else {
-        points_.cell[p] = found;
-        dt_next = std::min(dt_next, mesh_.cell_min_height[found] / (material.wave_speed + speed));
-      }
-    }
-    if (kind != 0) {
-#pragma omp critical(lituya_bad_point)
-      if (bad_point < 0 || static_cast<long>(p) < bad_point) {
-        bad_point = static_cast<long>(p);
-        bad_kind = kind;
-      }
-    }
+    const double speed = points.velocity[p].norm();
+    const PointFault kind = relocate(solid_, mesh_, p, speed, sigma.allFinite(), max_velocity_);
+    if (kind != PointFault::kNone)
+      fault.note(p, kind);
+    else
+      dt_next =
+          std::min(dt_next, mesh_.cell_min_height[points.cell[p]] / (material.wave_speed + speed));
   }
   next_time_step_ = dt_next;
-  if (bad_point >= 0) {
-    const std::size_t p = static_cast<std::size_t>(bad_point);
+  if (fault.point >= 0) {
+    const std::size_t p = static_cast<std::size_t>(fault.point);
     std::ostringstream m;
-    m << "step " << step_count_ << ": point " << points_.id[p] << " (material '"
-      << description_.materials[points_.material[p]].name << "') at "
-      << format_vector(points_.position[p].data(), dim) << ": ";
-    if (bad_kind == 1)
+    m << "step " << step_count_ << ": point " << points.id[p] << " (material '"
+      << description_.materials[points.material[p]].name << "') at "
+      << format_vector(points.position[p].data(), dim) << ": ";
+    if (fault.kind == PointFault::kNotFinite)
       m << "velocity or stress is not finite (velocity "
-        << format_vector(points_.velocity[p].data(), dim) << ", stress "
-        << format_vector(points_.stress[p].data(), 6)
+        << format_vector(points.velocity[p].data(), dim) << ", stress "
+        << format_vector(points.stress[p].data(), 6)
         << "); the run went unstable: reduce the Courant number or check the material";
     else
-      m << describe_fault(bad_kind == 2 ? PointFault::kTooFast : PointFault::kLeftMesh,
-                          points_.velocity[p], max_velocity_);
+      m << describe_fault(fault.kind, points.velocity[p], max_velocity_);
     throw RunError(m.str());
   }
 }
@@ -409,8 +296,8 @@ void Simulation<dim>::step(double dt, double damping) {
   if (has_liquid_) liquid_to_nodes(Transfer::kMassMomentumForce);
   if (!active_tractions_.empty()) apply_tractions();
   nodal_update(dt, damping);
-  nodes_to_points(dt);
-  if (has_liquid_) liquid_nodes_to_points(dt);
+  nodes_to_points(solid_, mesh_, dt, threads_);
+  if (has_liquid_) nodes_to_points(water_, mesh_, dt, threads_);
   if (musl_) remap_momentum();
   if (volumetric_smoothing_) smooth_volumetric_strain(dt);
   update_stress_and_relocate(dt);
@@ -425,45 +312,48 @@ void Simulation<dim>::step(double dt, double damping) {
 template <int dim>
 void Simulation<dim>::map_to_grid() {
   points_to_nodes(Transfer::kMassMomentumForce);
+  const detail::PhaseSums<dim>& solid = solid_.nodal.sums();
   for (std::size_t i = 0; i < mesh_.node_count(); ++i)
-    node_velocity_[i] = velocity_from_momentum(grid_.momentum[i], grid_.mass[i]);
+    solid_.node_velocity[i] = velocity_from_momentum(solid.momentum[i], solid.mass[i]);
   if (has_liquid_) {
     liquid_to_nodes(Transfer::kMassMomentumForce);
+    const detail::LiquidSums<dim>& liquid = water_.nodal.sums();
     for (std::size_t i = 0; i < mesh_.node_count(); ++i)
-      node_liquid_velocity_[i] =
-          velocity_from_momentum(liquid_grid_.momentum[i], liquid_grid_.mass[i]);
+      water_.node_velocity[i] = velocity_from_momentum(liquid.momentum[i], liquid.mass[i]);
   }
 }
 
 template <int dim>
 double Simulation<dim>::kinetic_energy() const {
-  double e = 0;
-  const std::size_t n = points_.size();
-#pragma omp parallel for num_threads(threads_) reduction(+ : e) schedule(static)
-  for (std::size_t p = 0; p < n; ++p)
-    e += 0.5 * points_.mass[p] * points_.velocity[p].squaredNorm();
-  const std::size_t n_liquid = liquid_.size();
-#pragma omp parallel for num_threads(threads_) reduction(+ : e) schedule(static)
-  for (std::size_t q = 0; q < n_liquid; ++q)
-    e += 0.5 * liquid_.mass[q] * liquid_.velocity[q].squaredNorm();
-  return e;
+  // Summed in a fixed order: the quasi-static stage stops on it, so its rounding must not
+  // depend on the threads' timing.
+  const MaterialPoints<dim>& points = solid_.points;
+  const LiquidPoints<dim>& liquid = water_.points;
+  return ordered_sum(threads_, points.size(),
+                     [&](std::size_t p) {
+                       return 0.5 * points.mass[p] * points.velocity[p].squaredNorm();
+                     }) +
+         ordered_sum(threads_, liquid.size(), [&](std::size_t q) {
+           return 0.5 * liquid.mass[q] * liquid.velocity[q].squaredNorm();
+         });
 }
 
 template <int dim>
 std::size_t Simulation<dim>::storage_bytes() const {
-  const std::size_t nodes = mesh_.node_count() * (sizeof(double) + 4 * sizeof(Vec));
   const std::size_t cells = mesh_.cell_count() * (2 * sizeof(typename Mesh<dim>::CellNodes) +
                                                   sizeof(Eigen::Matrix<double, dim, dim>) +
                                                   (dim + 1) * sizeof(Vec) + 2 * sizeof(double));
-  std::size_t liquid = 0;
+  const std::size_t nodes = mesh_.node_count();
+  std::size_t bytes = solid_.bytes() + cells;
+  if (volumetric_smoothing_)
+    bytes += point_volumetric_strain_.size() * sizeof(double) +
+             static_cast<std::size_t>(smoothing_.threads()) * nodes * 2 * sizeof(double);
   if (has_liquid_)
-    liquid = liquid_.bytes() + liquid_shape_.size() * sizeof(Shape) +
-             liquid_flux_divergence_.size() * sizeof(double) +
-             (1 + liquid_thread_buffers_.size()) * mesh_.node_count() *
-                 (5 * sizeof(double) + 3 * sizeof(Vec)) +
-             mesh_.node_count() * (5 * sizeof(double) + 2 * sizeof(Vec));
-  return points_.bytes() + shape_.size() * sizeof(Shape) + nodes + cells + liquid +
-         thread_buffers_.size() * mesh_.node_count() * (sizeof(double) + 2 * sizeof(Vec));
+    bytes +=
+        water_.bytes() + liquid_flux_divergence_.size() * sizeof(double) +
+        static_cast<std::size_t>(coupling_.threads()) * nodes * (2 * sizeof(double) + sizeof(Vec)) +
+        nodes * 3 * sizeof(double);
+  return bytes;
 }
 
 template <int dim>
@@ -541,10 +431,10 @@ StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback&
   report_progress(stage, t, report.wall_time, true);
   if (quasi_static) {
     // The quasi-static stage ends in equilibrium: the next stage starts at rest.
-    for (auto& v : points_.velocity) v.setZero();
-    for (auto& v : liquid_.velocity) v.setZero();
+    for (auto& v : solid_.points.velocity) v.setZero();
+    for (auto& v : water_.points.velocity) v.setZero();
     if (stage.reset_displacement)
-      for (auto& u : points_.displacement) u.setZero();
+      for (auto& u : solid_.points.displacement) u.setZero();
   }
   return report;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// Small kernels shared by the solid-phase and the liquid-phase parts of the time loop
-// (simulation.cpp and two_phase.cpp). Internal to the solver library.
+// Small kernels of the time loop that are not transfers (those are in phase.hpp): strain and
+// stress-rotation increments, point location at the start and fault messages. Internal to the
+// solver library.
 #include <sstream>
 #include <string>
 
@@ -9,17 +10,9 @@
 #include "lituya/common/input_error.hpp"
 #include "lituya/solver/mesh.hpp"
 #include "lituya/solver/mohr_coulomb.hpp"
+#include "lituya/solver/phase.hpp"
 
 namespace lituya::solver::detail {
-
-// sigma . g for the in-plane (2D) or full (3D) stress tensor in Voigt storage.
-inline Eigen::Vector2d stress_dot(const Voigt6& s, const Eigen::Vector2d& g) {
-  return {s(0) * g(0) + s(3) * g(1), s(3) * g(0) + s(1) * g(1)};
-}
-inline Eigen::Vector3d stress_dot(const Voigt6& s, const Eigen::Vector3d& g) {
-  return {s(0) * g(0) + s(3) * g(1) + s(5) * g(2), s(3) * g(0) + s(1) * g(1) + s(4) * g(2),
-          s(5) * g(0) + s(4) * g(1) + s(2) * g(2)};
-}
 
 // Strain increment (engineering shear) from the velocity gradient L = dv/dx times dt.
 inline Voigt6 strain_increment(const Eigen::Matrix2d& l, double dt) {
@@ -56,15 +49,6 @@ inline void rotate_stress(Voigt6& s, const Eigen::Matrix3d& l, double dt) {
   s(5) += rate(0, 2);
 }
 
-// Nodes that hold almost no mass (a point at the far corner of a cell) would get
-// meaningless velocities; their velocity is taken as zero.
-inline constexpr double kMassFloor = 1e-14;
-
-template <class Vec>
-inline Vec velocity_from_momentum(const Vec& momentum, double mass) {
-  return mass > kMassFloor ? Vec(momentum / mass) : Vec::Zero();
-}
-
 inline std::string format_vector(const double* v, int n) {
   std::ostringstream s;
   s << "(";
@@ -96,9 +80,6 @@ void locate_all(const Mesh<dim>& mesh, const std::vector<Vec>& position, std::ve
     cell[p] = found;
   }
 }
-
-// What stops a run at a point (update_stress_and_relocate, update_liquid_and_relocate).
-enum class PointFault { kNone, kNotFinite, kTooFast, kLeftMesh };
 
 // The diagnostic of a too fast point (with `remedy`, what to try) or one that left the mesh
 // (a non-finite one names its own fields).

@@ -69,28 +69,17 @@ double drag_coefficient(double n, double grain_diameter, double viscosity, doubl
 }  // namespace
 
 template <int dim>
-void Simulation<dim>::LiquidBuffer::assign(std::size_t n_nodes) {
-  mass.assign(n_nodes, 0.0);
-  momentum.assign(n_nodes, Vec::Zero());
-  force.assign(n_nodes, Vec::Zero());
-  pressure_force.assign(n_nodes, Vec::Zero());
-  water_volume.assign(n_nodes, 0.0);
-  water_volume_pressure.assign(n_nodes, 0.0);
-  solid_volume.assign(n_nodes, 0.0);
-  drag.assign(n_nodes, 0.0);
-}
-
-template <int dim>
 void Simulation<dim>::setup_liquid() {
   const std::size_t n_nodes = mesh_.node_count();
   if (pore_liquid_ < 0)
     throw InputError(description_.materials_file, 0,
                      "the case has liquid points but no water material");
-  for (std::size_t q = 0; q < liquid_.size(); ++q)
-    if (!description_.materials[liquid_.material[q]].is_liquid())
+  LiquidPoints<dim>& liquid = water_.points;
+  for (std::size_t q = 0; q < liquid.size(); ++q)
+    if (!description_.materials[liquid.material[q]].is_liquid())
       throw InputError(description_.liquid_points_file, 0,
-                       "liquid point " + std::to_string(liquid_.id[q]) + " has material '" +
-                           description_.materials[liquid_.material[q]].name +
+                       "liquid point " + std::to_string(liquid.id[q]) + " has material '" +
+                           description_.materials[liquid.material[q]].name +
                            "', which is not a water material");
   const MaterialModelData& water = materials_[pore_liquid_];
   for (std::size_t m = 0; m < materials_.size(); ++m) {
@@ -110,186 +99,121 @@ void Simulation<dim>::setup_liquid() {
                   (material.dry_density() + n * water.liquid_density));
     soil.wave_speed = std::max(soil.wave_speed, undrained);
   }
-  liquid_grid_.assign(n_nodes);
-  node_liquid_velocity_.assign(n_nodes, Vec::Zero());
-  node_liquid_acceleration_.assign(n_nodes, Vec::Zero());
+  water_.allocate_nodes(threads_, n_nodes);
+  coupling_.allocate(threads_, n_nodes);
+  projection_.sums.allocate(threads_, n_nodes);
   node_porosity_.assign(n_nodes, 1.0);
   node_pressure_.assign(n_nodes, 0.0);
   node_mesh_volume_.assign(n_nodes, 0.0);
   for (std::size_t c = 0; c < mesh_.cell_count(); ++c)
     for (int node : mesh_.cell_nodes[c])
       node_mesh_volume_[node] += mesh_.cell_volume[c] / (dim + 1);
-  liquid_flux_divergence_.assign(liquid_.size(), 0.0);
-  locate_all<dim>(mesh_, liquid_.position, liquid_.cell, liquid_.id, liquid_shape_,
+  liquid_flux_divergence_.assign(liquid.size(), 0.0);
+  locate_all<dim>(mesh_, liquid.position, liquid.cell, liquid.id, water_.shape,
                   description_.liquid_points_file, "liquid point");
 }
 
 template <int dim>
 void Simulation<dim>::liquid_to_nodes(Transfer what) {
-  const bool with_force = what == Transfer::kMassMomentumForce;
-  const std::size_t n_points = points_.size();
-  const std::size_t n_liquid = liquid_.size();
+  using detail::LiquidSums;
+  const MaterialPoints<dim>& points = solid_.points;
+  LiquidPoints<dim>& liquid = water_.points;
   const std::size_t n_nodes = mesh_.node_count();
   const MaterialModelData& water = materials_[pore_liquid_];
+  if (what == Transfer::kMomentum) {
+    scatter_to_nodes(water_, mesh_, gravity_, liquid.viscous_stress, what, [](auto&&...) {});
+    return;
+  }
 
-  // Pass 1 (forces only): the solid volume fraction and the drag coefficient at the nodes.
-  if (with_force) {
-#pragma omp parallel num_threads(threads_)
-    {
-      const int t = omp_get_thread_num();
-      LiquidBuffer& b = t == 0 ? liquid_grid_ : liquid_thread_buffers_[t - 1];
-      std::fill(b.solid_volume.begin(), b.solid_volume.end(), 0.0);
-      std::fill(b.drag.begin(), b.drag.end(), 0.0);
-#pragma omp for schedule(static)
-      for (std::size_t p = 0; p < n_points; ++p) {
-        const auto& nodes = mesh_.cell_nodes[points_.cell[p]];
-        const Shape& n = shape_[p];
+  // Pass 1: the solid volume fraction and the drag coefficient at the nodes, from the solid
+  // points.
+  coupling_.run(
+      points.size(), [](CouplingSums& c) { return std::tie(c.solid_volume, c.drag); },
+      [&](CouplingSums& c, std::size_t p) {
+        const auto& nodes = mesh_.cell_nodes[points.cell[p]];
+        const Shape& n = solid_.shape[p];
         Vec relative = Vec::Zero();  // previous step's v_w - v_s at the point
         for (int i = 0; i <= dim; ++i)
-          relative += n(i) * (node_liquid_velocity_[nodes[i]] - node_velocity_[nodes[i]]);
+          relative += n(i) * (water_.node_velocity[nodes[i]] - solid_.node_velocity[nodes[i]]);
         const double porosity_p = porosity(p);
-        const double v = points_.volume[p];
-        const double c =
-            drag_coefficient(porosity_p, materials_[points_.material[p]].grain_diameter,
+        const double v = points.volume[p];
+        const double drag =
+            drag_coefficient(porosity_p, materials_[points.material[p]].grain_diameter,
                              water.viscosity, water.liquid_density, relative.norm());
         for (int i = 0; i <= dim; ++i) {
-          b.solid_volume[nodes[i]] += n(i) * v * (1.0 - porosity_p);
-          b.drag[nodes[i]] += n(i) * v * c;
+          c.solid_volume[nodes[i]] += n(i) * v * (1.0 - porosity_p);
+          c.drag[nodes[i]] += n(i) * v * drag;
         }
-      }
-      if (threads_ > 1) {
-#pragma omp for schedule(static)
-        for (std::size_t i = 0; i < n_nodes; ++i)
-          for (const LiquidBuffer& other : liquid_thread_buffers_) {
-            liquid_grid_.solid_volume[i] += other.solid_volume[i];
-            liquid_grid_.drag[i] += other.drag[i];
-          }
-      }
-    }
-#pragma omp parallel for num_threads(threads_) schedule(static)
-    for (std::size_t i = 0; i < n_nodes; ++i)
-      node_porosity_[i] = std::clamp(1.0 - liquid_grid_.solid_volume[i] / node_mesh_volume_[i],
-                                     kMinimumPorosity, 1.0);
-  }
-
-  // Pass 2: liquid mass, momentum, gravity, viscous and pressure forces.
-#pragma omp parallel num_threads(threads_)
-  {
-    const int t = omp_get_thread_num();
-    LiquidBuffer& b = t == 0 ? liquid_grid_ : liquid_thread_buffers_[t - 1];
-    if (with_force) {
-      std::fill(b.mass.begin(), b.mass.end(), 0.0);
-      std::fill(b.force.begin(), b.force.end(), Vec::Zero());
-      std::fill(b.pressure_force.begin(), b.pressure_force.end(), Vec::Zero());
-      std::fill(b.water_volume.begin(), b.water_volume.end(), 0.0);
-      std::fill(b.water_volume_pressure.begin(), b.water_volume_pressure.end(), 0.0);
-    }
-    std::fill(b.momentum.begin(), b.momentum.end(), Vec::Zero());
-#pragma omp for schedule(static)
-    for (std::size_t q = 0; q < n_liquid; ++q) {
-      const int cell = liquid_.cell[q];
-      const auto& nodes = mesh_.cell_nodes[cell];
-      const Shape& n = liquid_shape_[q];
-      const double m = liquid_.mass[q];
-      const Vec momentum = m * liquid_.velocity[q];
-      if (with_force) {
-        const auto& grad = mesh_.cell_shape_gradient[cell];
-        double porosity_q = 0;
-        for (int i = 0; i <= dim; ++i) porosity_q += n(i) * node_porosity_[nodes[i]];
-        liquid_.porosity[q] = porosity_q;
-        const double volume = liquid_.volume[q];
-        const double pressure_volume = liquid_.pressure[q] * volume;
-        const Vec weight = m * gravity_;
-        for (int i = 0; i <= dim; ++i) {
-          const int node = nodes[i];
-          b.mass[node] += n(i) * m;
-          b.momentum[node] += n(i) * momentum;
-          b.pressure_force[node] += pressure_volume * grad[i];
-          b.water_volume[node] += n(i) * volume;
-          b.water_volume_pressure[node] += n(i) * pressure_volume;
-          b.force[node] +=
-              n(i) * weight - liquid_.volume[q] * stress_dot(liquid_.viscous_stress[q], grad[i]);
-        }
-      } else {
-        for (int i = 0; i <= dim; ++i) b.momentum[nodes[i]] += n(i) * momentum;
-      }
-    }
-    if (threads_ > 1) {
-#pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n_nodes; ++i)
-        for (const LiquidBuffer& other : liquid_thread_buffers_) {
-          if (with_force) {
-            liquid_grid_.mass[i] += other.mass[i];
-            liquid_grid_.force[i] += other.force[i];
-            liquid_grid_.pressure_force[i] += other.pressure_force[i];
-            liquid_grid_.water_volume[i] += other.water_volume[i];
-            liquid_grid_.water_volume_pressure[i] += other.water_volume_pressure[i];
-          }
-          liquid_grid_.momentum[i] += other.momentum[i];
-        }
-    }
-  }
-  if (!with_force) return;
-
-    // Pass 3: the pore pressure on the grain volume of the solid points, with the pressure
-    // interpolated from its volume-weighted nodal average.
+      });
+  const CouplingSums& coupling = coupling_.sums();
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i)
-    node_pressure_[i] = liquid_grid_.water_volume[i] > 0
-                            ? liquid_grid_.water_volume_pressure[i] / liquid_grid_.water_volume[i]
-                            : 0.0;
-#pragma omp parallel num_threads(threads_)
-  {
-    const int t = omp_get_thread_num();
-    LiquidBuffer& b = t == 0 ? liquid_grid_ : liquid_thread_buffers_[t - 1];
-    if (t > 0) std::fill(b.pressure_force.begin(), b.pressure_force.end(), Vec::Zero());
-#pragma omp for schedule(static)
-    for (std::size_t p = 0; p < n_points; ++p) {
-      const int cell = points_.cell[p];
-      const auto& nodes = mesh_.cell_nodes[cell];
-      const auto& grad = mesh_.cell_shape_gradient[cell];
-      double pore_pressure = 0;
-      for (int i = 0; i <= dim; ++i) pore_pressure += shape_[p](i) * node_pressure_[nodes[i]];
-      if (pore_pressure == 0) continue;
-      const double grain_volume = points_.volume[p] * (1.0 - porosity(p));
-      for (int i = 0; i <= dim; ++i)
-        b.pressure_force[nodes[i]] += pore_pressure * grain_volume * grad[i];
-    }
-    if (threads_ > 1) {
-#pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n_nodes; ++i)
-        for (const LiquidBuffer& other : liquid_thread_buffers_)
-          liquid_grid_.pressure_force[i] += other.pressure_force[i];
-    }
-  }
+    node_porosity_[i] =
+        std::clamp(1.0 - coupling.solid_volume[i] / node_mesh_volume_[i], kMinimumPorosity, 1.0);
+
+  // Pass 2: liquid mass, momentum, gravity and viscous force (the phase's own transfer), and
+  // the liquid's pressure terms.
+  scatter_to_nodes(
+      water_, mesh_, gravity_, liquid.viscous_stress, what,
+      [&](LiquidSums<dim>& b, std::size_t q, const auto& nodes, const Shape& n, const auto& grad) {
+        double porosity_q = 0;
+        for (int i = 0; i <= dim; ++i) porosity_q += n(i) * node_porosity_[nodes[i]];
+        liquid.porosity[q] = porosity_q;
+        const double volume = liquid.volume[q];
+        const double pressure_volume = liquid.pressure[q] * volume;
+        for (int i = 0; i <= dim; ++i) {
+          b.pressure_force[nodes[i]] += pressure_volume * grad[i];
+          b.water_volume[nodes[i]] += n(i) * volume;
+          b.water_volume_pressure[nodes[i]] += n(i) * pressure_volume;
+        }
+      });
+
+  // Pass 3: the pore pressure on the grain volume of the solid points, with the pressure
+  // interpolated from its volume-weighted nodal average.
+  const LiquidSums<dim>& sums = water_.nodal.sums();
+#pragma omp parallel for num_threads(threads_) schedule(static)
+  for (std::size_t i = 0; i < n_nodes; ++i)
+    node_pressure_[i] =
+        sums.water_volume[i] > 0 ? sums.water_volume_pressure[i] / sums.water_volume[i] : 0.0;
+  coupling_.run(
+      points.size(), [](CouplingSums& c) { return std::tie(c.grain_pressure_force); },
+      [&](CouplingSums& c, std::size_t p) {
+        const int cell = points.cell[p];
+        const auto& nodes = mesh_.cell_nodes[cell];
+        const auto& grad = mesh_.cell_shape_gradient[cell];
+        double pore_pressure = 0;
+        for (int i = 0; i <= dim; ++i)
+          pore_pressure += solid_.shape[p](i) * node_pressure_[nodes[i]];
+        if (pore_pressure == 0) return;
+        const double grain_volume = points.volume[p] * (1.0 - porosity(p));
+        for (int i = 0; i <= dim; ++i)
+          c.grain_pressure_force[nodes[i]] += pore_pressure * grain_volume * grad[i];
+      });
 }
 
 template <int dim>
 void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
   const std::size_t n_nodes = mesh_.node_count();
-  auto damp = [damping](Vec& force, const Vec& velocity) {
-    if (damping <= 0) return;
-    for (int d = 0; d < dim; ++d) {
-      const double sign = velocity(d) > 0 ? 1.0 : (velocity(d) < 0 ? -1.0 : 0.0);
-      force(d) -= damping * std::abs(force(d)) * sign;
-    }
-  };
+  const detail::PhaseSums<dim>& solid = solid_.nodal.sums();
+  const detail::LiquidSums<dim>& liquid = water_.nodal.sums();
+  const CouplingSums& coupling = coupling_.sums();
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i) {
-    const double ms = grid_.mass[i], mw = liquid_grid_.mass[i];
+    const double ms = solid.mass[i], mw = liquid.mass[i];
     const double n = node_porosity_[i];
-    const Vec vs_old = velocity_from_momentum(grid_.momentum[i], ms);
-    const Vec vw_old = velocity_from_momentum(liquid_grid_.momentum[i], mw);
+    const Vec vs_old = velocity_from_momentum(solid.momentum[i], ms);
+    const Vec vw_old = velocity_from_momentum(liquid.momentum[i], mw);
     // Eqs. (15), (16): the pore-pressure force shared by porosity.
-    Vec fs = grid_.force[i] + (1.0 - n) * liquid_grid_.pressure_force[i];
-    Vec fw = liquid_grid_.force[i] + n * liquid_grid_.pressure_force[i];
-    damp(fs, vs_old);
-    damp(fw, vw_old);
-    const bool solid = ms > kMassFloor, liquid = mw > kMassFloor;
-    Vec vs = solid ? Vec(vs_old + dt * fs / ms) : Vec::Zero();
-    Vec vw = liquid ? Vec(vw_old + dt * fw / mw) : Vec::Zero();
-    const double a = dt * liquid_grid_.drag[i];
-    if (solid && liquid && a > 0) {
+    const Vec pressure_force = liquid.pressure_force[i] + coupling.grain_pressure_force[i];
+    Vec fs = solid.force[i] + (1.0 - n) * pressure_force;
+    Vec fw = liquid.force[i] + n * pressure_force;
+    apply_local_damping(fs, vs_old, damping);
+    apply_local_damping(fw, vw_old, damping);
+    const bool has_solid = ms > kMassFloor, has_liquid = mw > kMassFloor;
+    Vec vs = has_solid ? Vec(vs_old + dt * fs / ms) : Vec::Zero();
+    Vec vw = has_liquid ? Vec(vw_old + dt * fw / mw) : Vec::Zero();
+    const double a = dt * coupling.drag[i];
+    if (has_solid && has_liquid && a > 0) {
       // Implicit drag: the 2x2 system of the header comment, momentum conserving.
       const double det = ms * mw + a * (ms + mw);
       const Vec ps = ms * vs, pw = mw * vw;
@@ -298,65 +222,45 @@ void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
     }
     // Where one phase is absent its velocity is taken as the other's, so the mixture flux
     // of eq. (8) and the relative velocity of eq. (23) see no phantom motion.
-    if (!liquid) vw = vs;
-    if (!solid) vs = vw;
-    node_velocity_[i] = vs;
-    node_liquid_velocity_[i] = vw;
-    node_acceleration_[i] = vs_old;
-    node_liquid_acceleration_[i] = vw_old;
+    if (!has_liquid) vw = vs;
+    if (!has_solid) vs = vw;
+    solid_.node_velocity[i] = vs;
+    water_.node_velocity[i] = vw;
+    solid_.node_acceleration[i] = vs_old;
+    water_.node_acceleration[i] = vw_old;
   }
-  apply_constraints<dim>(active_constraints_, node_velocity_);
-  apply_constraints<dim>(active_liquid_constraints_, node_liquid_velocity_);
-#pragma omp parallel for num_threads(threads_) schedule(static)
-  for (std::size_t i = 0; i < n_nodes; ++i) {
-    node_acceleration_[i] = (node_velocity_[i] - node_acceleration_[i]) / dt;
-    node_liquid_acceleration_[i] = (node_liquid_velocity_[i] - node_liquid_acceleration_[i]) / dt;
-  }
-}
-
-template <int dim>
-void Simulation<dim>::liquid_nodes_to_points(double dt) {
-  const std::size_t n_liquid = liquid_.size();
-  const double flip = damping_.liquid.flip_share(dt);
-#pragma omp parallel for num_threads(threads_) schedule(static)
-  for (std::size_t q = 0; q < n_liquid; ++q) {
-    const auto& nodes = mesh_.cell_nodes[liquid_.cell[q]];
-    const Shape& n = liquid_shape_[q];
-    Vec acceleration = Vec::Zero(), velocity = Vec::Zero();
-    for (int i = 0; i <= dim; ++i) {
-      acceleration += n(i) * node_liquid_acceleration_[nodes[i]];
-      velocity += n(i) * node_liquid_velocity_[nodes[i]];
-    }
-    liquid_.velocity[q] = flip * (liquid_.velocity[q] + dt * acceleration) + (1 - flip) * velocity;
-    liquid_.position[q] += dt * velocity;
-  }
+  finish_nodal_update(solid_, dt, threads_);
+  finish_nodal_update(water_, dt, threads_);
 }
 
 template <int dim>
 void Simulation<dim>::remap_liquid_momentum() {
-  liquid_to_nodes(Transfer::kMomentum);
+  remap_velocity(water_, mesh_, threads_);
   const std::size_t n_nodes = mesh_.node_count();
+  const std::vector<double>& solid_mass = solid_.nodal.sums().mass;
+  const std::vector<double>& liquid_mass = water_.nodal.sums().mass;
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i) {
-    const bool liquid = liquid_grid_.mass[i] > kMassFloor;
-    node_liquid_velocity_[i] =
-        liquid ? velocity_from_momentum(liquid_grid_.momentum[i], liquid_grid_.mass[i])
-               : node_velocity_[i];
-    if (grid_.mass[i] <= kMassFloor && liquid) node_velocity_[i] = node_liquid_velocity_[i];
+    // As in the nodal update: an absent phase moves with the other one.
+    const bool has_liquid = liquid_mass[i] > kMassFloor;
+    if (!has_liquid) water_.node_velocity[i] = solid_.node_velocity[i];
+    if (solid_mass[i] <= kMassFloor && has_liquid)
+      solid_.node_velocity[i] = water_.node_velocity[i];
   }
-  apply_constraints<dim>(active_liquid_constraints_, node_liquid_velocity_);
-  apply_constraints<dim>(active_constraints_, node_velocity_);
+  apply_constraints<dim>(water_.constraints, water_.node_velocity);
+  apply_constraints<dim>(solid_.constraints, solid_.node_velocity);
 }
 
 template <int dim>
 void Simulation<dim>::update_liquid_and_relocate(double dt) {
   using Gradient = Eigen::Matrix<double, dim, dim>;
-  const std::size_t n_liquid = liquid_.size();
+  LiquidPoints<dim>& liquid = water_.points;
+  const std::size_t n_liquid = liquid.size();
   // Divergence of the mixture's volume flux (the bracket of eq. 8) and the viscous stress
   // (eqs. 17, 18) from the nodal velocities after the remap.
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t q = 0; q < n_liquid; ++q) {
-    const int cell = liquid_.cell[q];
+    const int cell = liquid.cell[q];
     const auto& nodes = mesh_.cell_nodes[cell];
     const auto& grad = mesh_.cell_shape_gradient[cell];
     Gradient l = Gradient::Zero();
@@ -364,73 +268,56 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
     for (int i = 0; i <= dim; ++i) {
       const int node = nodes[i];
       const double n = node_porosity_[node];
-      const Vec flux = (1.0 - n) * node_velocity_[node] + n * node_liquid_velocity_[node];
+      const Vec flux = (1.0 - n) * solid_.node_velocity[node] + n * water_.node_velocity[node];
       divergence += flux.dot(grad[i]);
-      l.noalias() += node_liquid_velocity_[node] * grad[i].transpose();
+      l.noalias() += water_.node_velocity[node] * grad[i].transpose();
     }
     liquid_flux_divergence_[q] = divergence;
     // Newtonian viscous stress mu (grad v + grad v^T) = 2 mu D (eq. 17 with eq. 18 read as
     // twice the strain rate D), stored in the engineering-shear Voigt layout as a stress.
-    const double mu = materials_[liquid_.material[q]].viscosity;
+    const double mu = materials_[liquid.material[q]].viscosity;
     const Voigt6 rate = strain_increment(l, 1.0);  // D_xx, D_yy, D_zz, 2 D_xy, ...
-    Voigt6& tau = liquid_.viscous_stress[q];
+    Voigt6& tau = liquid.viscous_stress[q];
     for (int k = 0; k < 3; ++k) tau(k) = 2.0 * mu * rate(k);
     for (int k = 3; k < 6; ++k) tau(k) = mu * rate(k);
   }
 
-  long bad_point = -1;
-  int bad_kind = 0;
+  FirstFault fault;
   double dt_next = next_time_step_;
 #pragma omp parallel for num_threads(threads_) schedule(static) reduction(min : dt_next)
   for (std::size_t q = 0; q < n_liquid; ++q) {
-    const MaterialModelData& water = materials_[liquid_.material[q]];
-    const double n = std::max(liquid_.porosity[q], kMinimumPorosity);
+    const MaterialModelData& water = materials_[liquid.material[q]];
+    const double n = std::max(liquid.porosity[q], kMinimumPorosity);
     // Eq. (8), compression positive; no tension (free surface, cavitation).
-    double& p = liquid_.pressure[q];
+    double& p = liquid.pressure[q];
     p = std::max(0.0, p - water.bulk_modulus / n * liquid_flux_divergence_[q] * dt);
     // Water volume from eq. (7): rho_w = rho_w0 (1 + p / K_w).
-    liquid_.volume[q] = liquid_.mass[q] / (water.liquid_density * (1.0 + p / water.bulk_modulus));
-    const double speed = liquid_.velocity[q].norm();
-    int kind = 0;
-    if (!std::isfinite(speed) || !std::isfinite(p))
-      kind = 1;
-    else if (speed > max_velocity_)
-      kind = 2;
-    else {
-      const int found = mesh_.locate(liquid_.cell[q], liquid_.position[q], liquid_shape_[q]);
-      if (found < 0)
-        kind = 3;
-      else {
-        liquid_.cell[q] = found;
-        const double h = mesh_.cell_min_height[found];
-        dt_next = std::min(dt_next, h / (water.wave_speed + speed +
-                                         2.0 * water.viscosity / (water.liquid_density * h)));
-      }
-    }
-    if (kind != 0) {
-#pragma omp critical(lituya_bad_liquid_point)
-      if (bad_point < 0 || static_cast<long>(q) < bad_point) {
-        bad_point = static_cast<long>(q);
-        bad_kind = kind;
-      }
+    liquid.volume[q] = liquid.mass[q] / (water.liquid_density * (1.0 + p / water.bulk_modulus));
+    const double speed = liquid.velocity[q].norm();
+    const PointFault kind = relocate(water_, mesh_, q, speed, std::isfinite(p), max_velocity_);
+    if (kind != PointFault::kNone) {
+      fault.note(q, kind);
+    } else {
+      const double h = mesh_.cell_min_height[liquid.cell[q]];
+      dt_next = std::min(dt_next, h / (water.wave_speed + speed +
+                                       2.0 * water.viscosity / (water.liquid_density * h)));
     }
   }
   next_time_step_ = dt_next;
-  if (bad_point >= 0) {
-    const std::size_t q = static_cast<std::size_t>(bad_point);
+  if (fault.point >= 0) {
+    const std::size_t q = static_cast<std::size_t>(fault.point);
     std::ostringstream m;
-    m << "step " << step_count_ << ": liquid point " << liquid_.id[q] << " (material '"
-      << description_.materials[liquid_.material[q]].name << "') at "
-      << format_vector(liquid_.position[q].data(), dim) << ": ";
-    if (bad_kind == 1)
+    m << "step " << step_count_ << ": liquid point " << liquid.id[q] << " (material '"
+      << description_.materials[liquid.material[q]].name << "') at "
+      << format_vector(liquid.position[q].data(), dim) << ": ";
+    if (fault.kind == PointFault::kNotFinite)
       m << "velocity or pressure is not finite (velocity "
-        << format_vector(liquid_.velocity[q].data(), dim) << ", pressure " << liquid_.pressure[q]
+        << format_vector(liquid.velocity[q].data(), dim) << ", pressure " << liquid.pressure[q]
         << " Pa); the run went unstable: reduce the Courant number";
     else
       // Water jets out of the impact zone are FLIP noise grown unchecked (user manual, 2.6):
       // a shorter liquid damping time is the first thing to try, the Courant number rarely.
-      m << describe_fault(bad_kind == 2 ? PointFault::kTooFast : PointFault::kLeftMesh,
-                          liquid_.velocity[q], max_velocity_,
+      m << describe_fault(fault.kind, liquid.velocity[q], max_velocity_,
                           "try a shorter [solver] liquid_pic_damping_time, e.g. half the one "
                           "in output/log.txt, or a smaller Courant number");
     throw RunError(m.str());
@@ -438,11 +325,9 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
 }
 
 #define LITUYA_TWO_PHASE_INSTANCES(D)                                  \
-  template void Simulation<D>::LiquidBuffer::assign(std::size_t);      \
   template void Simulation<D>::setup_liquid();                         \
   template void Simulation<D>::liquid_to_nodes(Transfer);              \
   template void Simulation<D>::two_phase_nodal_update(double, double); \
-  template void Simulation<D>::liquid_nodes_to_points(double);         \
   template void Simulation<D>::remap_liquid_momentum();                \
   template void Simulation<D>::update_liquid_and_relocate(double);
 LITUYA_TWO_PHASE_INSTANCES(2)

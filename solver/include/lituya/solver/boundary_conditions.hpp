@@ -37,8 +37,14 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
 
 // Applies the active constraints to nodal velocities (twice over, so that a node on two
 // non-orthogonal walls satisfies both). Tractions are skipped (they are forces).
+// `frictionless` (may be null): per node, the part of the velocity that forces carrying no
+// friction gave it this step. A contact wall takes the normal component of that part out of
+// the normal impulse that bounds the friction: for a saturated soil the pore-pressure share
+// pressing the grains on the wall, so that Coulomb friction acts on the effective normal
+// stress only (sigma'_n = sigma_n - p, eq. 19).
 template <int dim>
 void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
-                       std::vector<Eigen::Matrix<double, dim, 1>>& velocity);
+                       std::vector<Eigen::Matrix<double, dim, 1>>& velocity,
+                       const std::vector<Eigen::Matrix<double, dim, 1>>* frictionless = nullptr);
 
 }  // namespace lituya::solver

@@ -31,6 +31,8 @@
 #include "lituya/solver/material_points.hpp"
 #include "lituya/solver/mesh.hpp"
 #include "lituya/solver/mohr_coulomb.hpp"
+#include "lituya/solver/nodal_scatter.hpp"
+#include "lituya/solver/phase.hpp"
 #include "lituya/solver/transfer_damping.hpp"
 
 namespace lituya::solver {
@@ -81,16 +83,16 @@ class Simulation {
   long step_count() const { return step_count_; }
   const Mesh<dim>& mesh() const { return mesh_; }
   const TransferDamping& transfer_damping() const { return damping_; }
-  const MaterialPoints<dim>& points() const { return points_; }
-  MaterialPoints<dim>& points() { return points_; }
+  const MaterialPoints<dim>& points() const { return solid_.points; }
+  MaterialPoints<dim>& points() { return solid_.points; }
   const CaseDescription& description() const { return description_; }
-  const std::vector<double>& node_mass() const { return grid_.mass; }
-  const std::vector<Vec>& node_velocity() const { return node_velocity_; }
+  const std::vector<double>& node_mass() const { return solid_.nodal.sums().mass; }
+  const std::vector<Vec>& node_velocity() const { return solid_.node_velocity; }
   bool has_liquid() const { return has_liquid_; }
-  const LiquidPoints<dim>& liquid() const { return liquid_; }
-  LiquidPoints<dim>& liquid() { return liquid_; }
-  const std::vector<double>& node_liquid_mass() const { return liquid_grid_.mass; }
-  const std::vector<Vec>& node_liquid_velocity() const { return node_liquid_velocity_; }
+  const LiquidPoints<dim>& liquid() const { return water_.points; }
+  LiquidPoints<dim>& liquid() { return water_.points; }
+  const std::vector<double>& node_liquid_mass() const { return water_.nodal.sums().mass; }
+  const std::vector<Vec>& node_liquid_velocity() const { return water_.node_velocity; }
   const std::vector<double>& node_porosity() const { return node_porosity_; }
   const std::vector<double>& node_pressure() const { return node_pressure_; }
   // Porosity of solid point p: 1 - m / (rho_s V), the Lagrangian form of eq. (5).
@@ -103,27 +105,32 @@ class Simulation {
   // Applies the liquid pressure projection now (pressure_projection.cpp); for tests.
   int project_pressure_for_test() { return project_liquid_pressure(); }
   // Total number of points (solid + liquid), for throughput figures.
-  std::size_t point_count() const { return points_.size() + liquid_.size(); }
+  std::size_t point_count() const { return solid_.points.size() + water_.points.size(); }
   // Bytes held by points, nodes and mesh (for the memory-per-point report).
   std::size_t storage_bytes() const;
 
  private:
-  struct NodalBuffer {
-    std::vector<double> mass;
-    std::vector<Vec> momentum;
-    std::vector<Vec> force;
+  using SolidPhase = detail::Phase<dim, MaterialPoints<dim>, detail::PhaseSums<dim>>;
+  using LiquidPhase = detail::Phase<dim, LiquidPoints<dim>, detail::LiquidSums<dim>>;
+  using Transfer = detail::Transfer;
+  // Nodal sums of the solid points that only the coupling needs (two-phase cases only).
+  struct CouplingSums {
+    std::vector<double> solid_volume;       // sum N V (1 - n) of the solid points
+    std::vector<double> drag;               // sum N V C, C the drag coefficient of eq. (23)
+    std::vector<Vec> grain_pressure_force;  // sum p V (1 - n) grad N over the grains
+    void assign(std::size_t n) {
+      solid_volume.assign(n, 0.0);
+      drag.assign(n, 0.0);
+      grain_pressure_force.assign(n, Vec::Zero());
+    }
   };
-  enum class Transfer { kMassMomentumForce, kMomentum };
-  // Nodal sums of the liquid phase and of the coupling terms (two-phase cases only).
-  struct LiquidBuffer {
-    std::vector<double> mass;
-    std::vector<Vec> momentum;
-    std::vector<Vec> force;           // gravity and viscous force on the liquid
-    std::vector<Vec> pressure_force;  // integral of p grad N over the mixture, split by n
-    std::vector<double> water_volume, water_volume_pressure;  // sum N V_w, sum N V_w p
-    std::vector<double> solid_volume;                         // sum N V (1 - n) of the solid points
-    std::vector<double> drag;  // sum N V C, C the drag coefficient of eq. (23)
-    void assign(std::size_t n_nodes);
+  // Volume-weighted nodal sums of the volumetric strain increment.
+  struct SmoothingSums {
+    std::vector<double> volumetric_strain, volume;
+    void assign(std::size_t n) {
+      volumetric_strain.assign(n, 0.0);
+      volume.assign(n, 0.0);
+    }
   };
   struct MaterialModelData {
     MaterialModel model;
@@ -136,7 +143,6 @@ class Simulation {
 
   void points_to_nodes(Transfer what);
   void nodal_update(double dt, double damping);
-  void nodes_to_points(double dt);
   void remap_momentum();
   void smooth_volumetric_strain(double dt);
   void update_stress_and_relocate(double dt);
@@ -144,46 +150,35 @@ class Simulation {
   void setup_liquid();
   void liquid_to_nodes(Transfer what);
   void two_phase_nodal_update(double dt, double damping);
-  void liquid_nodes_to_points(double dt);
   void remap_liquid_momentum();
   void update_liquid_and_relocate(double dt);
   // Pressure-projection stabilisation (pressure_projection.cpp); returns CG iterations.
   int project_liquid_pressure();
-  void scatter_liquid(const std::vector<double>& point_values, std::vector<double>& nodal) const;
+  void scatter_liquid(const std::vector<double>& point_values, std::vector<double>& nodal);
   void gather_liquid(const std::vector<double>& nodal, std::vector<double>& point_values) const;
   void report_progress(const Stage& stage, double t, double wall, bool final_line);
+  void apply_tractions();
 
   CaseDescription description_;
   Mesh<dim> mesh_;
-  MaterialPoints<dim> points_;
-  std::vector<Shape> shape_;  // shape values of each point in its cell
+  SolidPhase solid_;
   std::vector<NodalConstraint<dim>> constraints_;
-  // Active velocity constraints acting on the solid and on the liquid nodes, and tractions.
-  std::vector<const NodalConstraint<dim>*> active_constraints_, active_liquid_constraints_;
   std::vector<const NodalConstraint<dim>*> active_tractions_;
-  void apply_tractions();
   double stage_time_ = 0;  // time since the start of the running stage (load ramps)
   std::vector<MaterialModelData> materials_;
   Vec gravity_;
   int threads_ = 1;
-  NodalBuffer grid_;
-  std::vector<NodalBuffer> thread_buffers_;  // threads 1..T-1
-  std::vector<Vec> node_velocity_;
-  std::vector<Vec> node_acceleration_;
   // Volumetric strain smoothing: volume-weighted nodal sums and the smoothed value per point.
   bool volumetric_smoothing_;
-  std::vector<double> node_volumetric_strain_, node_volume_;
+  detail::NodalScatter<SmoothingSums> smoothing_;
   std::vector<double> point_volumetric_strain_;
-  TransferDamping damping_;  // the FLIP/PIC blend of each phase
+  TransferDamping damping_;  // the FLIP/PIC blend of each phase (copied into the phases)
   bool musl_;
   double max_velocity_;
-  // Liquid phase (empty in a dry case).
+  // Liquid phase and coupling (empty in a dry case).
   bool has_liquid_ = false;
-  LiquidPoints<dim> liquid_;
-  std::vector<Shape> liquid_shape_;
-  LiquidBuffer liquid_grid_;
-  std::vector<LiquidBuffer> liquid_thread_buffers_;
-  std::vector<Vec> node_liquid_velocity_, node_liquid_acceleration_;
+  LiquidPhase water_;
+  detail::NodalScatter<CouplingSums> coupling_;
   std::vector<double> node_porosity_;
   std::vector<double> node_pressure_;           // volume-weighted nodal liquid pressure
   std::vector<double> node_mesh_volume_;        // integral of N_i over the mesh (lumped volume)
@@ -191,6 +186,7 @@ class Simulation {
   struct ProjectionScratch {
     std::vector<double> solution, rhs, diagonal, residual, preconditioned, direction, product;
     std::vector<double> point_values;
+    detail::NodalScatter<detail::ScalarSums> sums;
   };
   ProjectionScratch projection_;
   int pore_liquid_ = -1;  // the water material that fills the pores (drag, eq. 23)

@@ -1,0 +1,244 @@
+#pragma once
+// One phase of the two-layer MPM (section 2 of the paper): a point set, solid or liquid, and
+// its share of the background nodes. Each phase has its own points, shape-value cache, nodal
+// sums (per-thread buffers), nodal velocities, FLIP/PIC damping and active velocity
+// conditions. The transfers between its points and the nodes are the same for both phases and
+// are written here once:
+//   scatter_to_nodes     step 1: mass, momentum, gravity and the phase's own stress divergence
+//   finish_nodal_update  step 2: velocity conditions and the nodal acceleration
+//   nodes_to_points      step 3: FLIP/PIC velocity update and the point's move
+//   remap_velocity       step 4 (MUSL): nodal velocity from the updated point momenta
+//   relocate             step 5: the point's new cell, or the fault that stops the run
+// What couples the phases (porosity, drag, the pore-pressure split, eq. 8) is in
+// two_phase.cpp. Internal to the solver library; the public interface is simulation.hpp.
+#include <cmath>
+#include <cstddef>
+#include <tuple>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "lituya/solver/boundary_conditions.hpp"
+#include "lituya/solver/mesh.hpp"
+#include "lituya/solver/mohr_coulomb.hpp"
+#include "lituya/solver/nodal_scatter.hpp"
+#include "lituya/solver/transfer_damping.hpp"
+
+namespace lituya::solver::detail {
+
+// Nodes that hold almost no mass (a point at the far corner of a cell) would get
+// meaningless velocities; their velocity is taken as zero.
+inline constexpr double kMassFloor = 1e-14;
+
+template <class Vec>
+inline Vec velocity_from_momentum(const Vec& momentum, double mass) {
+  return mass > kMassFloor ? Vec(momentum / mass) : Vec::Zero();
+}
+
+// sigma . g for the in-plane (2D) or full (3D) stress tensor in Voigt storage.
+inline Eigen::Vector2d stress_dot(const Voigt6& s, const Eigen::Vector2d& g) {
+  return {s(0) * g(0) + s(3) * g(1), s(3) * g(0) + s(1) * g(1)};
+}
+inline Eigen::Vector3d stress_dot(const Voigt6& s, const Eigen::Vector3d& g) {
+  return {s(0) * g(0) + s(3) * g(1) + s(5) * g(2), s(3) * g(0) + s(1) * g(1) + s(4) * g(2),
+          s(5) * g(0) + s(4) * g(1) + s(2) * g(2)};
+}
+
+// What the points of one phase put on the nodes.
+template <int dim>
+struct PhaseSums {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  std::vector<double> mass;   // sum N m
+  std::vector<Vec> momentum;  // sum N m v
+  std::vector<Vec> force;     // sum N m g - V sigma . grad N (the phase's own stress)
+  void assign(std::size_t n) {
+    mass.assign(n, 0.0);
+    momentum.assign(n, Vec::Zero());
+    force.assign(n, Vec::Zero());
+  }
+  auto all() { return std::tie(mass, momentum, force); }
+  static constexpr std::size_t kBytesPerNode = sizeof(double) + 2 * sizeof(Vec);
+};
+
+// The liquid's sums add its pressure terms (two_phase.cpp).
+template <int dim>
+struct LiquidSums : PhaseSums<dim> {
+  using Vec = typename PhaseSums<dim>::Vec;
+  std::vector<Vec> pressure_force;                          // sum V_w p grad N (eqs. 15, 16)
+  std::vector<double> water_volume, water_volume_pressure;  // sum N V_w, sum N V_w p
+  void assign(std::size_t n) {
+    PhaseSums<dim>::assign(n);
+    pressure_force.assign(n, Vec::Zero());
+    water_volume.assign(n, 0.0);
+    water_volume_pressure.assign(n, 0.0);
+  }
+  auto all() {
+    return std::tie(this->mass, this->momentum, this->force, pressure_force, water_volume,
+                    water_volume_pressure);
+  }
+  static constexpr std::size_t kBytesPerNode =
+      PhaseSums<dim>::kBytesPerNode + sizeof(Vec) + 2 * sizeof(double);
+};
+
+template <int dim, class Points, class Sums>
+struct Phase {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  using Shape = typename Mesh<dim>::Shape;
+
+  Points points;
+  std::vector<Shape> shape;            // shape values of each point in its cell
+  NodalScatter<Sums> nodal;            // nodal.sums(): the phase's nodal mass, momentum, forces
+  std::vector<Vec> node_velocity;      // after the nodal update, then after the MUSL remap
+  std::vector<Vec> node_acceleration;  // holds the old velocity until finish_nodal_update
+  PhaseDamping damping;                // the FLIP/PIC blend of this phase
+  std::vector<const NodalConstraint<dim>*> constraints;  // active velocity conditions
+
+  void allocate_nodes(int threads, std::size_t n_nodes) {
+    nodal.allocate(threads, n_nodes);
+    node_velocity.assign(n_nodes, Vec::Zero());
+    node_acceleration.assign(n_nodes, Vec::Zero());
+  }
+  std::size_t bytes() const {
+    return points.bytes() + shape.size() * sizeof(Shape) +
+           node_velocity.size() * (2 * sizeof(Vec) + nodal.threads() * Sums::kBytesPerNode);
+  }
+};
+
+enum class Transfer { kMassMomentumForce, kMomentum };
+
+// Step 1: mass, momentum, weight and internal force -V sigma . grad N (the weak form of
+// div sigma, eq. 11 for the solid's effective stress; the viscous stress of eq. 17 for the
+// water). `extra(sums, k, nodes, shape, grad)` adds what only one phase puts on the nodes.
+template <int dim, class Points, class Sums, class Extra>
+void scatter_to_nodes(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh,
+                      const Eigen::Matrix<double, dim, 1>& gravity,
+                      const std::vector<Voigt6>& stress, Transfer what, Extra extra) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  Points& points = phase.points;
+  const std::size_t n_points = points.size();
+  if (what == Transfer::kMomentum) {
+    phase.nodal.run(
+        n_points, [](Sums& s) { return std::tie(s.momentum); },
+        [&](Sums& b, std::size_t p) {
+          const auto& nodes = mesh.cell_nodes[points.cell[p]];
+          const Vec momentum = points.mass[p] * points.velocity[p];
+          for (int i = 0; i <= dim; ++i) b.momentum[nodes[i]] += phase.shape[p](i) * momentum;
+        });
+    return;
+  }
+  phase.nodal.run(
+      n_points, [](Sums& s) { return s.all(); },
+      [&](Sums& b, std::size_t p) {
+        const int cell = points.cell[p];
+        const auto& nodes = mesh.cell_nodes[cell];
+        const auto& grad = mesh.cell_shape_gradient[cell];
+        const auto& n = phase.shape[p];
+        const double m = points.mass[p];
+        const double v = points.volume[p];
+        const Vec momentum = m * points.velocity[p];
+        const Vec weight = m * gravity;
+        const Voigt6& sigma = stress[p];
+        for (int i = 0; i <= dim; ++i) {
+          const int node = nodes[i];
+          b.mass[node] += n(i) * m;
+          b.momentum[node] += n(i) * momentum;
+          b.force[node] += n(i) * weight - v * stress_dot(sigma, grad[i]);
+        }
+        extra(b, p, nodes, n, grad);
+      });
+}
+
+// Local (Cundall) damping: a force opposing the velocity, proportional to the unbalanced
+// force, that vanishes at equilibrium (quasi-static stages).
+template <class Vec>
+void apply_local_damping(Vec& force, const Vec& velocity, double damping) {
+  if (damping <= 0) return;
+  for (int d = 0; d < force.size(); ++d) {
+    const double sign = velocity(d) > 0 ? 1.0 : (velocity(d) < 0 ? -1.0 : 0.0);
+    force(d) -= damping * std::abs(force(d)) * sign;
+  }
+}
+
+// Step 2, the end of the nodal update: node_velocity holds the new velocity and
+// node_acceleration the old one; applies the velocity conditions, then a = (v_new - v_old)/dt.
+// `frictionless` (contact walls): the velocity each node gained from forces that carry no
+// friction (boundary_conditions.hpp).
+template <int dim, class Points, class Sums>
+void finish_nodal_update(Phase<dim, Points, Sums>& phase, double dt, int threads,
+                         const std::vector<Eigen::Matrix<double, dim, 1>>* frictionless = nullptr) {
+  apply_constraints<dim>(phase.constraints, phase.node_velocity, frictionless);
+  const std::size_t n_nodes = phase.node_velocity.size();
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::size_t i = 0; i < n_nodes; ++i)
+    phase.node_acceleration[i] = (phase.node_velocity[i] - phase.node_acceleration[i]) / dt;
+}
+
+// Step 3: FLIP keeps the point's own velocity plus the grid's acceleration (little numerical
+// dissipation), PIC takes the grid's velocity (stable, dissipative); the phase's damping sets
+// the blend. The point moves with the grid velocity.
+template <int dim, class Points, class Sums>
+void nodes_to_points(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, double dt,
+                     int threads) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  Points& points = phase.points;
+  const std::size_t n_points = points.size();
+  const double flip = phase.damping.flip_share(dt);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::size_t p = 0; p < n_points; ++p) {
+    const auto& nodes = mesh.cell_nodes[points.cell[p]];
+    const auto& n = phase.shape[p];
+    Vec acceleration = Vec::Zero(), velocity = Vec::Zero();
+    for (int i = 0; i <= dim; ++i) {
+      acceleration += n(i) * phase.node_acceleration[nodes[i]];
+      velocity += n(i) * phase.node_velocity[nodes[i]];
+    }
+    points.velocity[p] = flip * (points.velocity[p] + dt * acceleration) + (1 - flip) * velocity;
+    points.position[p] += dt * velocity;
+    if constexpr (requires { points.displacement; }) points.displacement[p] += dt * velocity;
+  }
+}
+
+// Step 4 (MUSL): the nodal momentum of the updated point velocities, and the nodal velocity
+// from it (zero where the phase has no mass; the caller applies the velocity conditions).
+template <int dim, class Points, class Sums>
+void remap_velocity(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, int threads) {
+  scatter_to_nodes(phase, mesh, {}, {}, Transfer::kMomentum, [](auto&&...) {});
+  const Sums& sums = phase.nodal.sums();
+  const std::size_t n_nodes = phase.node_velocity.size();
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::size_t i = 0; i < n_nodes; ++i)
+    phase.node_velocity[i] = velocity_from_momentum(sums.momentum[i], sums.mass[i]);
+}
+
+// What stops a run at a point.
+enum class PointFault { kNone, kNotFinite, kTooFast, kLeftMesh };
+
+// The first point (lowest index) that faulted in a parallel loop: the same point whatever the
+// threads' timing.
+struct FirstFault {
+  long point = -1;
+  PointFault kind = PointFault::kNone;
+  void note(std::size_t p, PointFault fault) {
+#pragma omp critical(lituya_first_fault)
+    if (point < 0 || static_cast<long>(p) < point) {
+      point = static_cast<long>(p);
+      kind = fault;
+    }
+  }
+};
+
+// Step 5: point p's fields are `finite` or not; if they are and it is not faster than
+// `max_velocity`, finds its new cell from the old one (walking through face neighbours) and
+// refreshes its shape values. Returns the fault, kNone when the point was relocated.
+template <int dim, class Points, class Sums>
+PointFault relocate(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, std::size_t p,
+                    double speed, bool finite, double max_velocity) {
+  if (!finite || !std::isfinite(speed)) return PointFault::kNotFinite;
+  if (speed > max_velocity) return PointFault::kTooFast;
+  const int found = mesh.locate(phase.points.cell[p], phase.points.position[p], phase.shape[p]);
+  if (found < 0) return PointFault::kLeftMesh;
+  phase.points.cell[p] = found;
+  return PointFault::kNone;
+}
+
+}  // namespace lituya::solver::detail
