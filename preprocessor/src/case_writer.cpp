@@ -156,9 +156,9 @@ void write_post(const PostSettings& post, const fs::path& case_folder) {
   TomlFile out(case_folder / kPostFile, "lituya-post");
   out.add(post.table);
   out.close();
-  if (post.reference_file)
-    fs::copy_file(*post.reference_file, case_folder / post.reference_file->filename(),
-                  fs::copy_options::overwrite_existing);
+  // post.toml names each copy relative to itself, which is how `lituya post` resolves it.
+  for (const PostDataFile& data : post.data_files)
+    fs::copy_file(data.source, case_folder / data.case_name, fs::copy_options::overwrite_existing);
 }
 
 }  // namespace lituya::pre

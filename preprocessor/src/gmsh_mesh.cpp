@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <regex>
 #include <sstream>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include <gmsh.h>
 
@@ -50,20 +52,142 @@ InputError gmsh_error(const std::filesystem::path& geometry, const std::string& 
   return InputError(geometry.string(), 0, "gmsh: " + message);
 }
 
-// Opens a file and reports its first error. gmsh's .geo parser must not be interrupted by an
-// exception: a throw from inside it leaves its lexer reading the closed file, and every later
-// parse in this process fails. So errors are logged (not thrown) while the file is read, and
-// the log is checked afterwards.
-void open_without_throwing(const std::filesystem::path& geometry) {
-  gmsh::logger::start();
-  gmsh::option::setNumber("General.AbortOnError", 0);
-  gmsh::open(geometry.string());
-  gmsh::option::setNumber("General.AbortOnError", 2);
+// The geometry's lines with comments blanked out (strings kept), so that a search for a
+// statement finds its line and not a commented-out copy.
+std::vector<std::string> uncommented_lines(const std::filesystem::path& geometry) {
+  std::ifstream in(geometry);
+  std::vector<std::string> lines;
+  bool in_block = false;
+  for (std::string line; std::getline(in, line);) {
+    bool in_string = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (in_block) {
+        if (line.compare(i, 2, "*/") == 0) {
+          in_block = false;
+          line[i] = line[i + 1] = ' ';
+          ++i;
+        } else {
+          line[i] = ' ';
+        }
+      } else if (line[i] == '"') {
+        in_string = !in_string;
+      } else if (!in_string && line.compare(i, 2, "//") == 0) {
+        line.erase(i);
+      } else if (!in_string && line.compare(i, 2, "/*") == 0) {
+        in_block = true;
+        line[i] = line[i + 1] = ' ';
+        ++i;
+      }
+    }
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+// 1-based line of the last statement of the geometry (the file itself, not what it includes)
+// that matches `statement`; 0 when there is none (e.g. it comes from an included file).
+int line_matching(const std::filesystem::path& geometry, const std::regex& statement) {
+  const std::vector<std::string> lines = uncommented_lines(geometry);
+  for (std::size_t k = lines.size(); k-- > 0;)
+    if (std::regex_search(lines[k], statement)) return static_cast<int>(k) + 1;
+  return 0;
+}
+
+// gmsh logs "Meshing surface 2 (Plane, Frontal-Delaunay)" before it meshes an entity, and its
+// meshing errors rarely say which entity they are about: the last such line before the error
+// does. Returns e.g. {"surface", 2}, or an empty kind.
+std::pair<std::string, int> entity_being_meshed(const std::vector<std::string>& log,
+                                                std::size_t error) {
+  static const std::regex meshing(R"(^Info: Meshing (curve|surface|volume) (\d+))");
+  std::smatch m;
+  for (std::size_t k = error; k-- > 0;)
+    if (std::regex_search(log[k], m, meshing)) return {m[1].str(), std::stoi(m[2].str())};
+  return {"", 0};
+}
+
+// Line of the statement that defines entity `tag` in the geometry (built-in kernel names and
+// the common OpenCASCADE shapes), or 0.
+int definition_line(const std::filesystem::path& geometry, const std::string& kind, int tag) {
+  const std::string shapes = kind == "curve"     ? "Line|Circle|Ellipse|Spline|BSpline|Bezier|Curve"
+                             : kind == "surface" ? "Plane Surface|Surface|Rectangle|Disk"
+                                                 : "Volume|Box|Sphere|Cylinder|Cone|Wedge|Torus";
+  return line_matching(geometry, std::regex(R"(^\s*(?:)" + shapes + R"()\s*\(\s*)" +
+                                            std::to_string(tag) + R"(\s*\)\s*=)"));
+}
+
+// Runs `gmsh_call` (opening or meshing the model) with gmsh's errors logged rather than
+// thrown, then throws the first logged error as an InputError. Two reasons not to let gmsh
+// throw here: a throw from inside its .geo parser leaves the lexer reading the closed file,
+// and every later parse in this process fails; and gmsh meshes inside OpenMP parallel
+// regions, from which an exception cannot escape: the process terminates (abort, exit 134),
+// whatever the number of threads.
+template <class GmshCall>
+void call_without_throwing(const std::filesystem::path& geometry, GmshCall gmsh_call) {
+  struct LoggedErrors {
+    LoggedErrors() {
+      gmsh::logger::start();
+      gmsh::option::setNumber("General.AbortOnError", 0);
+    }
+    ~LoggedErrors() {
+      try {
+        gmsh::option::setNumber("General.AbortOnError", 2);
+        gmsh::logger::stop();
+      } catch (...) {
+        // Only reached while another error unwinds; the session is closed right after.
+      }
+    }
+  } logged;
+  gmsh_call();
   std::vector<std::string> log;
   gmsh::logger::get(log);
-  gmsh::logger::stop();
-  for (const std::string& line : log)
-    if (line.rfind("Error: ", 0) == 0) throw gmsh_error(geometry, line.substr(7));
+  for (std::size_t k = 0; k < log.size(); ++k) {
+    if (log[k].rfind("Error: ", 0) != 0) continue;
+    const std::string message = log[k].substr(7);
+    const auto [kind, tag] = entity_being_meshed(log, k);
+    // A parse error names its own file and line; a meshing error gets the entity.
+    if (kind.empty() || message.rfind("'", 0) == 0) throw gmsh_error(geometry, message);
+    throw InputError(
+        geometry.string(), definition_line(geometry, kind, tag),
+        "gmsh: " + message + " (while meshing " + kind + " " + std::to_string(tag) + ")");
+  }
+}
+
+// gmsh 4.8's algorithms for quadrangles and hexahedra need a cross field (frame field) that
+// it never builds when driven through its API: Mesh.Algorithm = 8 (Frontal-Delaunay for
+// quads; also per surface with MeshAlgorithm Surface {...} = 8) and Mesh.Algorithm3D = 9
+// (R-tree) crash the process (segmentation fault) on any geometry, so no error handling can
+// catch them. Lituya needs triangles and tetrahedra anyway, so they are refused before
+// meshing instead of replaced: the .geo then meshes the same in Lituya as in gmsh's GUI.
+void refuse_crashing_algorithms(const std::filesystem::path& geometry, int dimension) {
+  std::string version;
+  gmsh::option::getString("General.Version", version);
+  std::string advice = ": it is meant for quadrangle/hexahedral meshes and crashes the gmsh ";
+  advice += "library Lituya uses (gmsh " + version + "), while Lituya needs linear triangles ";
+  advice += "(2D) or tetrahedra (3D). Remove the option, or choose a triangle algorithm, e.g. ";
+  double algorithm = 0;
+  gmsh::option::getNumber("Mesh.Algorithm", algorithm);
+  if (algorithm == 8)
+    throw InputError(geometry.string(),
+                     line_matching(geometry, std::regex(R"(\bMesh\.Algorithm\s*=)")),
+                     "Mesh.Algorithm = 8 (Frontal-Delaunay for quads) is not supported" + advice +
+                         "Mesh.Algorithm = 6 (Frontal-Delaunay, gmsh's default)");
+  // The value of a per-surface algorithm cannot be read back through gmsh's API, so only a
+  // literal 8 in the file itself is found.
+  const int per_surface =
+      line_matching(geometry, std::regex(R"(\bMeshAlgorithm\s+Surface\s*\{[^}]*\}\s*=\s*8\s*;)"));
+  if (per_surface > 0)
+    throw InputError(geometry.string(), per_surface,
+                     "MeshAlgorithm Surface {...} = 8 (Frontal-Delaunay for quads) is not "
+                     "supported" +
+                         advice + "6 (Frontal-Delaunay, gmsh's default)");
+  if (dimension == 3) {
+    gmsh::option::getNumber("Mesh.Algorithm3D", algorithm);
+    if (algorithm == 9)
+      throw InputError(geometry.string(),
+                       line_matching(geometry, std::regex(R"(\bMesh\.Algorithm3D\s*=)")),
+                       "Mesh.Algorithm3D = 9 (R-tree) is not supported" + advice +
+                           "Mesh.Algorithm3D = 1 (Delaunay, gmsh's default)");
+  }
 }
 
 std::string element_name(int type) {
@@ -296,10 +420,11 @@ Mesh read_gmsh_mesh(const std::filesystem::path& geometry, const MeshingOptions&
     // refine locally. Set before opening (a .geo may mesh while it is read) and after (a .geo
     // may set its own value).
     gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
-    open_without_throwing(geometry);
+    call_without_throwing(geometry, [&] { gmsh::open(geometry.string()); });
     if (extension == ".geo") {
       gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
-      gmsh::model::mesh::generate(options.dimension);
+      refuse_crashing_algorithms(geometry, options.dimension);
+      call_without_throwing(geometry, [&] { gmsh::model::mesh::generate(options.dimension); });
     }
     return read_current_model(geometry, options);
   } catch (const InputError&) {

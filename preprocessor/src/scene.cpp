@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <set>
 
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/toml_reader.hpp"
+#include "lituya/pre/case_writer.hpp"
 #include "lituya/pre/seeding.hpp"
 
 namespace lituya::pre {
@@ -250,9 +252,51 @@ void read_boundaries_and_stages(const TomlTable& root, Scene& scene) {
   if (auto o = root.optional_table("output")) scene.output = solver::read_output_settings(*o);
 }
 
+// The [post] keys that name a data file for `lituya post`. The sweep rewrites the same keys
+// (scene_edit.cpp) to absolute paths.
+constexpr const char* kPostDataKeys[] = {"reference", "gauge_reference"};
+
+// Names a case folder holds besides the copied data files (see case_writer.hpp).
+bool is_case_file_name(const std::string& name) {
+  for (const char* taken : {kGeometryFile, kPointsFile, kLiquidPointsFile, kMaterialsFile,
+                            kStagesFile, kPostFile, "output", "post"})
+    if (name == taken) return true;
+  return false;
+}
+
+// Checks the file `key` names (relative to the scene file), so a missing or unreadable one
+// stops `lituya pre` instead of `lituya post` after the solve, and records it for copying.
+void add_post_data_file(const TomlTable& post, const fs::path& scene_file, const char* key,
+                        PostSettings& settings) {
+  const std::string name = post.string(key);
+  const std::string where = std::string("'post.") + key + "' = \"" + name + "\"";
+  if (name.empty()) post.fail(where + " is empty: name a CSV file or remove the key", key);
+  const fs::path file = scene_file.parent_path() / name;
+  const std::string looked_for =
+      " (looked for " + file.string() + "; the path is relative to the scene file)";
+  if (!fs::exists(file)) post.fail(where + ": file not found" + looked_for, key);
+  if (!fs::is_regular_file(file)) post.fail(where + " is not a regular file" + looked_for, key);
+  if (!std::ifstream(file)) post.fail(where + ": the file cannot be read" + looked_for, key);
+
+  // The copy keeps the file's name, unless that name is taken by a case file or by another
+  // data file: then the key makes it unique.
+  PostDataFile data{key, file, file.filename().string()};
+  for (const PostDataFile& other : settings.data_files) {
+    std::error_code ignored;
+    if (fs::equivalent(other.source, file, ignored)) {
+      data.case_name = other.case_name;  // one file named twice is copied once
+      break;
+    }
+    if (other.case_name == data.case_name) data.case_name = std::string(key) + "_" + data.case_name;
+  }
+  if (is_case_file_name(data.case_name)) data.case_name = std::string(key) + "_" + data.case_name;
+  settings.table.insert_or_assign(key, data.case_name);
+  settings.data_files.push_back(std::move(data));
+}
+
 // [post] is forwarded as written: `lituya post` owns its keys. The preprocessor checks only
-// what it knows better (stage and material names, that the reference file exists), so such
-// mistakes surface before any solve.
+// what it knows better (stage and material names, that the data files exist and can be read),
+// so such mistakes surface before any solve.
 void read_post(const TomlTable& root, const fs::path& scene_file, Scene& scene) {
   const std::optional<TomlTable> post = root.optional_table("post");
   if (!post) return;
@@ -280,16 +324,8 @@ void read_post(const TomlTable& root, const fs::path& scene_file, Scene& scene) 
                    "track_materials");
     }
   }
-  if (post->has("reference")) {
-    const std::string reference = post->string("reference");
-    const fs::path file = scene_file.parent_path() / reference;
-    if (!fs::is_regular_file(file))
-      post->fail("reference data \"" + reference + "\" not found (looked for " + file.string() +
-                     "; the path is relative to the scene file)",
-                 "reference");
-    settings.reference_file = file;
-    settings.table.insert_or_assign("reference", file.filename().string());
-  }
+  for (const char* key : kPostDataKeys)
+    if (post->has(key)) add_post_data_file(*post, scene_file, key, settings);
   scene.post = std::move(settings);
 }
 

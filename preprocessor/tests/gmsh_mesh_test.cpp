@@ -168,6 +168,52 @@ TEST(GmshMesh, MissingFileIsAnError) {
       "no_such_file.geo", 0, {"not found"});
 }
 
+// gmsh 4.8 crashes (segmentation fault) on its quadrangle algorithm: it must be refused before
+// meshing, with the line that sets it (not the commented-out line above it).
+TEST(GmshMesh, FrontalQuadAlgorithmIsRefused) {
+  expect_input_error(
+      [] {
+        read_gmsh_mesh(test_data("frontal_quad.geo"), {2, 0.5, false});
+      },
+      "frontal_quad.geo", 15, {"Mesh.Algorithm = 8", "linear triangles", "Remove the option"});
+}
+
+TEST(GmshMesh, PerSurfaceFrontalQuadAlgorithmIsRefused) {
+  testing::TempFolder folder;
+  std::string geo = testing::read_bytes(test_data("open_loop.geo"));
+  geo.replace(geo.find("{1, 2, 3}"), 9, "{1, 2, 3, 4}");
+  testing::write_text(folder / "per_surface.geo", geo + "MeshAlgorithm Surface {1} = 8;\n");
+  expect_input_error(
+      [&] {
+        read_gmsh_mesh(folder / "per_surface.geo", {2, 0.5, false});
+      },
+      "per_surface.geo", 15, {"MeshAlgorithm Surface", "linear triangles"});
+}
+
+TEST(GmshMesh, RTree3DAlgorithmIsRefused) {
+  testing::TempFolder folder;
+  testing::write_text(folder / "rtree.geo",
+                      testing::read_bytes(test_data("cube.geo")) + "Mesh.Algorithm3D = 9;\n");
+  expect_input_error(
+      [&] {
+        read_gmsh_mesh(folder / "rtree.geo", {3, 0.5, false});
+      },
+      "rtree.geo", 7, {"Mesh.Algorithm3D = 9", "tetrahedra"});
+}
+
+// gmsh reports an open curve loop while it meshes, from inside its threaded meshing, where a
+// thrown error aborts the process. It must come back as an InputError at the surface, and
+// leave gmsh usable.
+TEST(GmshMesh, OpenCurveLoopIsAnError) {
+  expect_input_error(
+      [] {
+        read_gmsh_mesh(test_data("open_loop.geo"), {2, 0.5, false});
+      },
+      "open_loop.geo", 13, {"gmsh: ", "closed loop", "while meshing surface 1"});
+  const Mesh mesh = read_gmsh_mesh(test_data("two_squares.geo"), {2, 0.5, false});
+  EXPECT_NEAR(total_measure(mesh, all_cells(mesh)), 2.0, 1e-12);
+}
+
 // gmsh is a process-wide singleton: a failed read must leave it usable for the next one.
 TEST(GmshMesh, ReadingAfterAnErrorWorks) {
   EXPECT_THROW(read_gmsh_mesh(test_data("syntax_error.geo"), {2, 0.5, false}), InputError);

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lituya/post/postprocess.hpp"
 #include "lituya/pre/preprocess.hpp"
 #include "test_support.hpp"
 
@@ -224,6 +225,58 @@ TEST_F(BadScene, PostNamesAnUnknownStage) {
 TEST_F(BadScene, PostReferenceMissing) {
   const auto scene = kScene + "\n[post]\nreference = \"lab.csv\"\n";
   expect_error(scene, "scene.toml", line_of(scene, "lab.csv"), {"lab.csv", "not found"});
+}
+
+// gauge_reference was once forwarded unchecked: `lituya post` then failed after the solve.
+TEST_F(BadScene, PostGaugeReferenceMissing) {
+  const auto scene = kScene + "\n[post]\ngauges = [0.5]\ngauge_reference = \"lab/gauges.csv\"\n";
+  expect_error(scene, "scene.toml", line_of(scene, "gauge_reference"),
+               {"'post.gauge_reference'", "not found", (folder_ / "lab/gauges.csv").string()});
+}
+
+TEST_F(BadScene, PostGaugeReferenceIsAFolder) {
+  std::filesystem::create_directory(folder_ / "lab");
+  const auto scene = kScene + "\n[post]\ngauges = [0.5]\ngauge_reference = \"lab\"\n";
+  expect_error(scene, "scene.toml", line_of(scene, "gauge_reference"), {"not a regular file"});
+}
+
+TEST_F(BadScene, PostReferenceEmpty) {
+  const auto scene = kScene + "\n[post]\nreference = \"\"\n";
+  expect_error(scene, "scene.toml", line_of(scene, "reference"), {"'post.reference'", "empty"});
+}
+
+// Every data file [post] names is copied into the case folder and post.toml names the copy,
+// so `lituya post` reads the case folder alone. Two files of the same name both survive.
+TEST_F(BadScene, PostDataFilesAreCopiedIntoTheCase) {
+  namespace fs = std::filesystem;
+  fs::create_directories(folder_ / "lab" / "slide");
+  fs::create_directories(folder_ / "lab" / "waves");
+  testing::write_text(folder_ / "lab/slide/data.csv", "time,front_travel,wall_height\n0,0,0\n");
+  testing::write_text(folder_ / "lab/waves/data.csv", "time,G1\n0.0,0.001\n");
+  const auto scene = kScene +
+                     "\n[post]\nstage = \"gravity\"\ntrack_materials = [\"sand\"]\n"
+                     "slope_origin = [0.0, 0.0]\nslope_angle = 0.0\n"
+                     "reference = \"lab/slide/data.csv\"\ngauges = [1.5]\n"
+                     "gauge_names = [\"G1\"]\nstill_water_level = 0.5\n"
+                     "gauge_reference = \"lab/waves/data.csv\"\n";
+  testing::write_text(folder_ / "scene.toml", scene);
+  const fs::path case_folder = folder_ / "case";
+  preprocess(folder_ / "scene.toml", case_folder, false);
+
+  const toml::table post = toml::parse_file((case_folder / "post.toml").string());
+  EXPECT_EQ(post["reference"].value<std::string>(), "data.csv");
+  EXPECT_EQ(post["gauge_reference"].value<std::string>(), "gauge_reference_data.csv");
+  EXPECT_EQ(testing::read_bytes(case_folder / "data.csv"),
+            testing::read_bytes(folder_ / "lab/slide/data.csv"));
+  EXPECT_EQ(testing::read_bytes(case_folder / "gauge_reference_data.csv"),
+            testing::read_bytes(folder_ / "lab/waves/data.csv"));
+
+  // What `lituya post` reads: the copies, even once the scene's own files are gone.
+  fs::remove_all(folder_ / "lab");
+  const post::PostSettings settings = post::read_post_settings(case_folder / "post.toml");
+  EXPECT_EQ(fs::path(settings.reference_file), fs::absolute(case_folder / "data.csv"));
+  EXPECT_EQ(fs::path(settings.gauge_reference_file),
+            fs::absolute(case_folder / "gauge_reference_data.csv"));
 }
 
 TEST_F(BadScene, GeoSyntaxError) {

@@ -36,7 +36,7 @@ void write_materials(const Scene& scene, const std::filesystem::path& file);
 // and the solver allocates no liquid phase).
 void write_stages(const Scene& scene, const Mesh& mesh, bool has_liquid_points,
                   const std::filesystem::path& file);
-// post.toml, and the reference data next to it.
+// post.toml, and copies of the data files it names (PostSettings::data_files) next to it.
 void write_post(const PostSettings& post, const std::filesystem::path& case_folder);
 
 }  // namespace lituya::pre

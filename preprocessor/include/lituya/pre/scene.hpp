@@ -38,12 +38,19 @@ struct Region {
   int group_line = 0;  // scene.toml line of `group`, for messages
 };
 
+// A data file named by a [post] key (`reference`, `gauge_reference`). It is copied into the
+// case folder as `case_name` and the key in post.toml rewritten to that name, so a case
+// folder holds everything `lituya post` reads.
+struct PostDataFile {
+  std::string key;
+  std::filesystem::path source;  // resolved against the scene's folder
+  std::string case_name;         // file name in the case folder
+};
+
 // The [post] table, forwarded to post.toml (`lituya post` validates its keys itself).
 struct PostSettings {
   toml::table table;  // without the header keys
-  // The reference data file named by `reference`, resolved against the scene folder; it is
-  // copied next to post.toml and `reference` rewritten to its file name.
-  std::optional<std::filesystem::path> reference_file;
+  std::vector<PostDataFile> data_files;
 };
 
 struct Scene {
