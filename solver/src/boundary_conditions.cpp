@@ -86,6 +86,9 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
   for (int n : order) {
     constraint.nodes.push_back(n);
     constraint.normal.push_back(normal_sum[n].normalized());
+    // Each facet's normal has the facet's size as its length, and a linear facet shares its
+    // area equally between its dim nodes (exact on a flat wall).
+    constraint.area.push_back(normal_sum[n].norm() / dim);
     if (bc.type == BoundaryType::kTraction) constraint.force.push_back(force_sum[n]);
   }
   return constraint;
@@ -94,7 +97,7 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
 template <int dim>
 void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
                        std::vector<Eigen::Matrix<double, dim, 1>>& velocity,
-                       const std::vector<Eigen::Matrix<double, dim, 1>>* frictionless) {
+                       const std::vector<double>* pore_pressure_push, bool coulomb) {
   using Vec = Eigen::Matrix<double, dim, 1>;
   for (int pass = 0; pass < 2; ++pass) {
     for (const NodalConstraint<dim>* c : active) {
@@ -122,13 +125,15 @@ void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
             Vec tangential = v - approach * n;
             const double slip = tangential.norm();
             // Coulomb: the tangential impulse is at most mu times the normal impulse, which
-            // is m * approach; stick if that is enough to stop the slip. Only the effective
-            // part of the normal impulse (without what frictionless forces pressed into the
-            // wall) bounds the friction.
+            // is m * approach; stick if that is enough to stop the slip. Of the normal
+            // impulse, the part the wall gives against the pore pressure on the grains
+            // carries no friction.
             const double effective =
-                frictionless ? std::max(0.0, approach - (*frictionless)[c->nodes[k]].dot(n))
-                             : approach;
-            const double reduction = c->friction * effective;
+                pore_pressure_push
+                    ? std::clamp(approach - (*pore_pressure_push)[c->nodes[k]] * c->area[k], 0.0,
+                                 approach)
+                    : approach;
+            const double reduction = coulomb ? c->friction * effective : 0.0;
             v = slip > reduction ? Vec(tangential * (1.0 - reduction / slip)) : Vec::Zero();
           }
           break;
@@ -146,10 +151,8 @@ template NodalConstraint<3> make_constraint<3>(const BoundaryCondition&,
                                                const std::vector<std::array<int, 3>>&,
                                                const Mesh<3>&, const std::string&);
 template void apply_constraints<2>(const std::vector<const NodalConstraint<2>*>&,
-                                   std::vector<Eigen::Vector2d>&,
-                                   const std::vector<Eigen::Vector2d>*);
+                                   std::vector<Eigen::Vector2d>&, const std::vector<double>*, bool);
 template void apply_constraints<3>(const std::vector<const NodalConstraint<3>*>&,
-                                   std::vector<Eigen::Vector3d>&,
-                                   const std::vector<Eigen::Vector3d>*);
+                                   std::vector<Eigen::Vector3d>&, const std::vector<double>*, bool);
 
 }  // namespace lituya::solver

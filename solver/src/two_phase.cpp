@@ -104,6 +104,7 @@ void Simulation<dim>::setup_liquid() {
   projection_.sums.allocate(threads_, n_nodes);
   node_porosity_.assign(n_nodes, 1.0);
   node_pressure_.assign(n_nodes, 0.0);
+  node_pore_pressure_push_.assign(n_nodes, 0.0);
   node_mesh_volume_.assign(n_nodes, 0.0);
   for (std::size_t c = 0; c < mesh_.cell_count(); ++c)
     for (int node : mesh_.cell_nodes[c])
@@ -226,11 +227,14 @@ void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
     if (!has_solid) vs = vw;
     solid_.node_velocity[i] = vs;
     water_.node_velocity[i] = vw;
+    // At a contact wall the grains' share (1 - n) p of the pore pressure pushes them on the
+    // wall without friction (the effective stress principle, eq. 19).
+    node_pore_pressure_push_[i] = has_solid ? dt * (1.0 - n) * node_pressure_[i] / ms : 0.0;
     solid_.node_acceleration[i] = vs_old;
     water_.node_acceleration[i] = vw_old;
   }
-  finish_nodal_update(solid_, dt, threads_);
-  finish_nodal_update(water_, dt, threads_);
+  finish_nodal_update(solid_, dt, threads_, &node_pore_pressure_push_);
+  finish_nodal_update<dim>(water_, dt, threads_, nullptr, false);
 }
 
 template <int dim>
@@ -247,7 +251,7 @@ void Simulation<dim>::remap_liquid_momentum() {
     if (solid_mass[i] <= kMassFloor && has_liquid)
       solid_.node_velocity[i] = water_.node_velocity[i];
   }
-  apply_constraints<dim>(water_.constraints, water_.node_velocity);
+  apply_constraints<dim>(water_.constraints, water_.node_velocity, nullptr, false);
   apply_constraints<dim>(solid_.constraints, solid_.node_velocity);
 }
 

