@@ -13,25 +13,40 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Terzaghi's series: excess pore pressure / u0 at depth ratio z/H and time factor T.
-double pressure_ratio(double depth_ratio, double time_factor) {
-  if (time_factor <= 0) return 1.0;
+// The load rises linearly from 0 to q over the time factor T_r (the scene's ramp_time), then
+// stays. A load step dq at T' leaves u = dq (u0/q) sum_m (2/Mm) sin(Mm Z) exp(-Mm^2 (T - T'))
+// (Terzaghi's series); superposing the steps of the ramp (Duhamel) integrates each term in
+// closed form:
+//   u / u0 = sum_m (2/Mm^3) sin(Mm Z) [exp(-Mm^2 (T - min(T, T_r))) - exp(-Mm^2 T)] / T_r.
+// The weight of term m at time factor T, per unit sin(Mm Z) (Mm = (2m+1) pi/2):
+double ramp_term(double mm, double time_factor, double ramp_factor) {
+  if (time_factor <= 0) return 0.0;
+  if (ramp_factor <= 0) return 2 / mm * std::exp(-mm * mm * time_factor);  // a sudden load
+  const double end = std::min(time_factor, ramp_factor);
+  return 2 / (mm * mm * mm) *
+         (std::exp(-mm * mm * (time_factor - end)) - std::exp(-mm * mm * time_factor)) /
+         ramp_factor;
+}
+
+// Excess pore pressure / u0 at depth ratio Z = z/H and time factor T (u0: the undrained
+// response to the full load q).
+double pressure_ratio(double depth_ratio, double time_factor, double ramp_factor) {
   double sum = 0;
   for (int m = 0; m < 200; ++m) {
     const double mm = (2 * m + 1) * kPi / 2;
-    sum += 2 / mm * std::sin(mm * depth_ratio) * std::exp(-mm * mm * time_factor);
+    sum += std::sin(mm * depth_ratio) * ramp_term(mm, time_factor, ramp_factor);
   }
   return sum;
 }
 
-// Average degree of consolidation U(T).
-double degree_of_consolidation(double time_factor) {
+// Depth-averaged excess pore pressure / u0 (the mean of sin(Mm Z) over the column is 1/Mm).
+double mean_pressure_ratio(double time_factor, double ramp_factor) {
   double sum = 0;
   for (int m = 0; m < 200; ++m) {
     const double mm = (2 * m + 1) * kPi / 2;
-    sum += 2 / (mm * mm) * std::exp(-mm * mm * time_factor);
+    sum += ramp_term(mm, time_factor, ramp_factor) / mm;
   }
-  return 1 - sum;
+  return sum;
 }
 
 }  // namespace
@@ -47,6 +62,17 @@ void run_terzaghi(const CaseContext& context, CaseResult& result) {
   const double s0 = load * height / (oedometric + bulk_water / n);
   const double s_inf = load * height / oedometric;
   const double cell = context.full ? 0.025 : 0.05;
+  const double ramp_time = 0.1;  // s, the traction's ramp_time in both scenes
+  const double ramp_factor = cv * ramp_time / (height * height);
+  // Settlement from 1D strain: s = (H / M) (q(t) - mean u) (grains incompressible), which is
+  // s0 at the first instant of a sudden load and s_inf once drained.
+  auto settlement_series = [&](double time_factor) {
+    const double applied = load * std::min(1.0, time_factor / ramp_factor);
+    return height / oedometric * (applied - u0 * mean_pressure_ratio(time_factor, ramp_factor));
+  };
+  // The degree of consolidation, (s - s0) / (s_inf - s0), with s0 and s_inf those of the full
+  // load; before the ramp ends it also holds the growth of the load.
+  auto degree = [&](double settlement) { return (settlement - s0) / (s_inf - s0); };
 
   const auto case_folder = run_scene(context);
   const auto liquid = read_series(case_folder, "consolidation", "liquid");
@@ -75,7 +101,7 @@ void run_terzaghi(const CaseContext& context, CaseResult& result) {
       const double y = x[3 * q + 1];
       if (y > height) continue;  // expelled water on top of the column
       const double depth_ratio = (height - y) / height;
-      const double exact = u0 * pressure_ratio(depth_ratio, t_factor);
+      const double exact = u0 * pressure_ratio(depth_ratio, t_factor, ramp_factor);
       isochrone_rows.push_back({t_factor, depth_ratio, p[q] / load, exact / load});
       if (lower_half_only && depth_ratio < 0.5) continue;
       squared += std::pow((p[q] - exact) / load, 2);
@@ -107,15 +133,15 @@ void run_terzaghi(const CaseContext& context, CaseResult& result) {
   };
   for (const Frame& f : solid) {
     const double t_factor = f.time * cv / (height * height);
-    const double degree = (settlement(f) - s0) / (s_inf - s0);
-    settlement_rows.push_back({t_factor, degree, degree_of_consolidation(t_factor)});
+    settlement_rows.push_back(
+        {t_factor, degree(settlement(f)), degree(settlement_series(t_factor))});
   }
   for (double time_factor : {0.1, 0.2, 0.5}) {
     const Frame& f = solid[nearest(solid, time_factor)];
     const double t_factor = f.time * cv / (height * height);
     add_check(result,
               "degree of consolidation U at T = " + std::to_string(time_factor).substr(0, 3), "-",
-              (settlement(f) - s0) / (s_inf - s0), degree_of_consolidation(t_factor), 0.05);
+              degree(settlement(f)), degree(settlement_series(t_factor)), 0.05);
   }
 
   std::sort(isochrone_rows.begin(), isochrone_rows.end());  // by T, then depth: clean lines
