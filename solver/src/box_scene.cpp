@@ -11,6 +11,18 @@ BoundaryCondition box_condition(BoundaryType type, double friction) {
   return b;
 }
 
+Stage settling_stage(double duration, double kinetic_energy_ratio,
+                     std::vector<std::string> boundaries) {
+  Stage settle;
+  settle.name = "settle";
+  settle.type = StageType::kQuasiStatic;
+  settle.duration = duration;
+  settle.damping = 0.7;
+  settle.kinetic_energy_ratio = kinetic_energy_ratio;
+  settle.boundaries = std::move(boundaries);
+  return settle;
+}
+
 Material paper_water() {
   Material m;
   m.name = "water";

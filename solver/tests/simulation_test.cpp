@@ -117,23 +117,11 @@ double sliding_block_velocity(double theta_deg, double mu, double time) {
   floor.name = "floor";
   scene.boundaries = {{"y-", glued}, {"y-", floor}};
   auto sim = make_box_simulation<2>(scene);
-  Stage settle;
-  settle.name = "settle";
-  settle.type = StageType::kQuasiStatic;
-  settle.duration = 0.5;
-  settle.damping = 0.7;
-  settle.kinetic_energy_ratio = 1e-6;
-  settle.boundaries = {"glued"};
-  sim.run_stage(settle, nullptr);
+  sim.run_stage(settling_stage(0.5, 1e-6, {"glued"}), nullptr);
   Stage stage = dynamic_stage(time);
   stage.boundaries = {"floor"};
   sim.run_stage(stage, nullptr);
-  double momentum = 0, mass = 0;
-  for (std::size_t i = 0; i < sim.points().size(); ++i) {
-    momentum += sim.points().mass[i] * sim.points().velocity[i](0);
-    mass += sim.points().mass[i];
-  }
-  return momentum / mass;
+  return mean_velocity(sim.points(), 0);
 }
 
 TEST(Simulation, SlidingBlockMatchesCoulombAcceleration) {
@@ -259,14 +247,7 @@ TEST(Simulation, TwoThreadRunsRepeatBitForBit) {
                         {"y-", box_condition(BoundaryType::kContact, 0.4)}};
     auto sim = make_box_simulation<2>(scene);
     sim.set_threads(2);
-    Stage settle;
-    settle.name = "settle";
-    settle.type = StageType::kQuasiStatic;
-    settle.duration = 0.05;
-    settle.damping = 0.7;
-    settle.kinetic_energy_ratio = 0.5;
-    settle.boundaries = {"x-", "y-"};
-    sim.run_stage(settle, nullptr);
+    sim.run_stage(settling_stage(0.05, 0.5, {"x-", "y-"}), nullptr);
     Stage stage = dynamic_stage(0.05);
     stage.boundaries = {"x-", "y-"};
     sim.run_stage(stage, nullptr);

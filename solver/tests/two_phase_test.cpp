@@ -294,23 +294,11 @@ double saturated_layer_speed(double theta_deg, double mu, double time) {
   Simulation<2> sim = make_box_simulation<2>(s);
   // The box scene's hydrostatic pressure uses |g|; the slope's is rho_w g cos(theta) depth.
   for (double& p : sim.liquid().pressure) p *= std::cos(theta);
-  Stage settle;
-  settle.name = "settle";
-  settle.type = StageType::kQuasiStatic;
-  settle.duration = 0.5;
-  settle.damping = 0.7;
-  settle.kinetic_energy_ratio = 1e-6;
-  settle.boundaries = {"glued"};
-  sim.run_stage(settle, nullptr);
+  sim.run_stage(settling_stage(0.5, 1e-6, {"glued"}), nullptr);
   Stage slide = dynamic_stage(time);
   slide.boundaries = {"bed", "bed_water"};
   sim.run_stage(slide, nullptr);
-  double momentum = 0, mass = 0;
-  for (std::size_t i = 0; i < sim.points().size(); ++i) {
-    momentum += sim.points().mass[i] * sim.points().velocity[i](0);
-    mass += sim.points().mass[i];
-  }
-  return momentum / mass;
+  return mean_velocity(sim.points(), 0);
 }
 
 TEST(TwoPhase, SaturatedLayerSlidesAtTheEffectiveStressFriction) {

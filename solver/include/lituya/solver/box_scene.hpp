@@ -47,6 +47,23 @@ BoundaryCondition box_condition(BoundaryType type, double friction = 0);
 // Water as in the paper's cases: rho_w = 1000 kg/m3, K_w = 2.15e7 Pa, mu = 1e-3 Pa s.
 Material paper_water();
 
+// A quasi-static stage named "settle" with heavy local damping (0.7) that ends when the
+// kinetic energy falls to `kinetic_energy_ratio` of its peak, with `boundaries` active: brings
+// a scene to equilibrium stresses before a release.
+Stage settling_stage(double duration, double kinetic_energy_ratio,
+                     std::vector<std::string> boundaries);
+
+// Mass-weighted mean of velocity component `d` of a point set (its momentum over its mass).
+template <class Points>
+double mean_velocity(const Points& points, int d) {
+  double momentum = 0, mass = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    momentum += points.mass[i] * points.velocity[i](d);
+    mass += points.mass[i];
+  }
+  return momentum / mass;
+}
+
 // Boundary facets (faces with no neighbour) whose nodes all satisfy `on_side`.
 template <int dim, class Predicate>
 std::vector<std::array<int, dim>> boundary_facets(const Mesh<dim>& mesh, Predicate on_side) {
