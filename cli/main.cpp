@@ -2,15 +2,24 @@
 // Every user error ends with a message naming the file and line (exit code 1); a run that
 // goes unstable ends with a diagnostic naming the step, point and field (exit code 2). A sweep
 // records failed runs and goes on; it ends with exit code 5 when any run failed.
+// A wrong command line is a usage error: a message and a hint naming the command's --help, on
+// stderr, exit code 1. Each command accepts only its own options.
+#include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <boost/program_options.hpp>
+#include <charconv>
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <streambuf>
 #include <string>
 #include <vector>
 
+#include "lituya/cli/version.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/post/postprocess.hpp"
 #include "lituya/pre/preprocess.hpp"
@@ -40,11 +49,19 @@ usage:
                                                    tabulate and plot the measures against it
   lituya sweep  SWEEP.toml [--measure M,...] [-o DIR] [--threads N] [--force] [--dry-run]
                                                    the same, defined in a sweep file
+  lituya COMMAND --help                            the command's usage and options
+  lituya --version                                 the version and the git commit built from
+
+Every command also takes -q/--quiet (print errors only) and --verbose (also the version,
+the threads and the time of each step). --threads N defaults to OMP_NUM_THREADS when it is
+set, else to the number of cores.
 
 CASE defaults to the folder 'case' next to SCENE.toml. Nothing is overwritten unless --force
 is given. File formats: manuals/file-formats.md; user manual: manuals/user-manual.md.
+)";
 
-sweep: KEY is a dotted path to one value of the scene, e.g. material.beads.friction_angle,
+const char* kSweepDetails =
+    R"(KEY is a dotted path to one value of the scene, e.g. material.beads.friction_angle,
 stage.release.courant, mesh.cell_size ([[...]] entries by name or group). A value may be a
 range START:STOP:STEP; write --values=-5,0,5 when the first value is negative. Measures:
 gauge_first_crest[:GAUGE], gauge_max[:GAUGE], leading_wave_max, front_travel_final,
@@ -52,16 +69,60 @@ front_travel_max, wall_height_final, wall_height_max (default: gauge_first_crest
 gauge, else front_travel_final). DIR defaults to sweep_<KEY> next to the scene (for a sweep
 file: its name without .toml). --dry-run checks every scene copy and measure and lists the
 runs without running them. Exit code 5: at least one run of the sweep failed (the table
-marks it; the others are complete).
-)";
+marks it; the others are complete).)";
+
+const std::vector<std::string> kCommands = {"pre", "solve", "post", "run", "verify", "sweep"};
+
+bool is_command(const std::string& name) {
+  return std::find(kCommands.begin(), kCommands.end(), name) != kCommands.end();
+}
+
+// A wrong command line. `command` names the --help to point to ("" for the top level).
+struct UsageError : std::runtime_error {
+  UsageError(const std::string& command, const std::string& message)
+      : std::runtime_error(message), command(command) {}
+  std::string command;
+};
+
+std::string help_hint(const std::string& command) {
+  return command.empty() ? "see 'lituya --help'" : "see 'lituya " + command + " --help'";
+}
+
+// The default of --threads. The solver sets its thread count explicitly on every loop, so
+// OMP_NUM_THREADS would otherwise be ignored; honouring it lets a job scheduler's setting
+// apply. omp_get_num_procs counts the cores this process may run on (taskset, cpusets), which
+// std::thread::hardware_concurrency does not.
+struct ThreadsDefault {
+  int threads = 1;
+  std::string source;  // for --verbose and --help
+};
+
+ThreadsDefault default_threads() {
+  if (const char* env = std::getenv("OMP_NUM_THREADS")) {
+    // OpenMP allows one number per nesting level ("4,2"); the solver's loops are one level.
+    std::string text(env);
+    text = text.substr(0, text.find(','));
+    text.erase(0, text.find_first_not_of(" \t"));
+    text.erase(text.find_last_not_of(" \t") + 1);
+    int n = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (error == std::errc() && end == text.data() + text.size() && n > 0)
+      return {n, "OMP_NUM_THREADS=" + std::string(env)};
+  }
+  const int cores = std::max(1, omp_get_num_procs());
+  return {cores, std::to_string(cores) + (cores == 1 ? " core" : " cores")};
+}
 
 struct Options {
   std::string command;
   std::string input;
   std::string output;
   int threads = 1;
+  std::string threads_source;
   bool force = false;
   bool full = false;
+  bool quiet = false;
+  bool verbose = false;
   std::vector<std::string> cases;
   std::string parameter;              // sweep
   std::string values;                 // sweep
@@ -69,54 +130,325 @@ struct Options {
   bool dry_run = false;               // sweep
 };
 
-Options parse(int argc, char** argv) {
-  Options o;
-  po::options_description named("options");
-  named.add_options()("help,h", "show usage")("output,o", po::value(&o.output), "output folder")(
-      "threads,t", po::value(&o.threads)->default_value(1), "OpenMP threads")(
-      "force,f", po::bool_switch(&o.force), "overwrite existing output")(
-      "full", po::bool_switch(&o.full), "verify: run the full variants")(
-      "case", po::value(&o.cases)->composing(), "verify: run only this case (repeatable)")(
-      "parameter,p", po::value(&o.parameter), "sweep: the scene key to vary")(
-      "values", po::value(&o.values), "sweep: its values, V1,V2,... or START:STOP:STEP")(
-      "measure,m", po::value(&o.measures)->composing(), "sweep: what to plot (repeatable)")(
-      "dry-run", po::bool_switch(&o.dry_run), "sweep: check and show the runs, run nothing")(
-      "command", po::value(&o.command), "")("input", po::value(&o.input), "");
+// One command: its synopsis, what it does, and the only options it accepts.
+struct Command {
+  std::string name;
+  std::string synopsis;
+  std::string summary;
+  std::string input;  // what the positional argument is; empty: the command takes none
+  po::options_description options;
+};
+
+constexpr unsigned kLineLength = 100;
+
+// The per-command option tables, bound to `o`. Each option is declared here once per command
+// that accepts it, so a command's --help and what it accepts cannot disagree.
+std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
+  const std::string threads_text =
+      "OpenMP threads (default: OMP_NUM_THREADS when set, else the "
+      "number of cores; here " +
+      std::to_string(threads.threads) + ", from " + threads.source + ")";
+  auto common = [&](po::options_description& d) {
+    d.add_options()("help,h", "show this help")("quiet,q", po::bool_switch(&o.quiet),
+                                                "print errors only")(
+        "verbose", po::bool_switch(&o.verbose),
+        "also print the version, the threads and the time of each step");
+  };
+  auto output = [&](po::options_description& d, const char* what) {
+    d.add_options()("output,o", po::value(&o.output)->value_name("DIR"), what);
+  };
+  auto threads_option = [&](po::options_description& d) {
+    d.add_options()("threads,t", po::value(&o.threads)->value_name("N"), threads_text.c_str());
+  };
+  auto force = [&](po::options_description& d, const char* what) {
+    d.add_options()("force,f", po::bool_switch(&o.force), what);
+  };
+  auto make = [](const char* name, const char* synopsis, const std::string& summary,
+                 const char* input) {
+    return Command{name, synopsis, summary, input,
+                   po::options_description("options", kLineLength, kLineLength / 2)};
+  };
+
+  std::vector<Command> table;
+  {
+    Command c = make("pre", "lituya pre SCENE.toml [-o CASE] [--force]",
+                     "Mesh the scene with gmsh, seed the material points and write the case "
+                     "folder.",
+                     "a scene file");
+    output(c.options, "the case folder (default: case/ next to the scene file)");
+    force(c.options, "write into a case folder that already holds files");
+    common(c.options);
+    table.push_back(std::move(c));
+  }
+  {
+    Command c =
+        make("solve", "lituya solve CASE [--threads N] [--force]",
+             "Run the case's stages and write the VTU series to CASE/output.", "a case folder");
+    threads_option(c.options);
+    force(c.options, "write into CASE/output when it already holds files");
+    common(c.options);
+    table.push_back(std::move(c));
+  }
+  {
+    Command c = make("post", "lituya post CASE [--force]",
+                     "Measure runout, profiles, wall height, wave gauges and the leading wave; "
+                     "write CSV tables and PNG plots to CASE/post.",
+                     "a case folder");
+    force(c.options, "write into CASE/post when it already holds files");
+    common(c.options);
+    table.push_back(std::move(c));
+  }
+  {
+    Command c = make("run", "lituya run SCENE.toml [-o CASE] [--threads N] [--force]",
+                     "pre + solve + post in one.", "a scene file");
+    output(c.options, "the case folder (default: case/ next to the scene file)");
+    threads_option(c.options);
+    force(c.options, "write into folders that already hold files");
+    common(c.options);
+    table.push_back(std::move(c));
+  }
+  {
+    Command c = make("verify",
+                     "lituya verify [--full] [-o REPORT] [--threads N] [--case NAME] "
+                     "[--force]",
+                     "Run the verification cases and write a report. Exit code 4: at least one "
+                     "check failed.",
+                     "");
+    c.options.add_options()("full", po::bool_switch(&o.full),
+                            "run the full variants instead of the quick (CI) ones")(
+        "case", po::value(&o.cases)->composing()->value_name("NAME"),
+        "run only this case (repeatable)");
+    output(c.options, "the report folder (default: verification-report/)");
+    threads_option(c.options);
+    force(c.options, "write into a report folder that already holds files");
+    common(c.options);
+    table.push_back(std::move(c));
+  }
+  {
+    Command c = make("sweep",
+                     "lituya sweep SCENE.toml --parameter KEY --values V1,V2,... [--measure M,...] "
+                     "[-o DIR]\n              [--threads N] [--force] [--dry-run]\n"
+                     "       lituya sweep SWEEP.toml [--measure M,...] [-o DIR] [--threads N] "
+                     "[--force] [--dry-run]",
+                     std::string("Run the scene once per value of KEY (pre + solve + post), then "
+                                 "tabulate and plot the\nmeasures against it.\n\n") +
+                         kSweepDetails,
+                     "a scene file (with --parameter and --values) or a sweep file");
+    c.options.add_options()("parameter,p", po::value(&o.parameter)->value_name("KEY"),
+                            "the scene key to vary")("values",
+                                                     po::value(&o.values)->value_name("V1,V2,..."),
+                                                     "its values, V1,V2,... or START:STOP:STEP")(
+        "measure,m", po::value(&o.measures)->composing()->value_name("M,..."),
+        "what to tabulate and plot (repeatable)")("dry-run", po::bool_switch(&o.dry_run),
+                                                  "check and list the runs, run nothing");
+    output(c.options, "the sweep folder (default: sweep_<KEY>/ next to the scene file)");
+    threads_option(c.options);
+    force(c.options, "write into a sweep folder that already holds files");
+    common(c.options);
+    table.push_back(std::move(c));
+  }
+  return table;
+}
+
+// The command word, found by parsing with every option of every command so that option values
+// are told apart from it wherever the options stand (`lituya -o post pre scene.toml` is `pre`).
+// When even that parse fails, the first word that names a command, for the hint only.
+std::string find_command(int argc, char** argv, const std::vector<Command>& table) {
+  po::options_description all;
+  for (const Command& c : table)
+    for (const auto& option : c.options.options())
+      if (!all.find_nothrow(option->long_name(), false)) all.add(option);
+  all.add_options()("version", "")("command", po::value<std::string>(), "")(
+      "rest", po::value<std::vector<std::string>>(), "");
+  po::positional_options_description positional;
+  positional.add("command", 1).add("rest", -1);
+  try {
+    const po::parsed_options parsed = po::command_line_parser(argc, argv)
+                                          .options(all)
+                                          .positional(positional)
+                                          .allow_unregistered()
+                                          .run();
+    for (const po::option& option : parsed.options)
+      if (option.string_key == "command" && !option.value.empty()) return option.value.front();
+    return "";
+  } catch (const po::error&) {
+    for (int i = 1; i < argc; ++i)
+      if (is_command(argv[i])) return argv[i];
+    return "";
+  }
+}
+
+void print_help(std::ostream& out, const Command& c) {
+  out << "usage: " << c.synopsis << "\n\n" << c.summary << "\n\n" << c.options;
+}
+
+// Parses the command line into `o`. Returns -1 to go on with o.command, or the exit code when
+// the command line only asked for help or the version.
+int parse(int argc, char** argv, Options& o) {
+  const ThreadsDefault threads = default_threads();
+  o.threads = threads.threads;
+  o.threads_source = threads.source;
+  const std::vector<Command> table = command_table(o, threads);
+  o.command = find_command(argc, argv, table);
+
+  if (o.command.empty()) {
+    po::options_description top;
+    top.add_options()("help,h", "")("version", "")("quiet,q", "")("verbose", "");
+    po::variables_map vm;
+    try {
+      po::store(po::command_line_parser(argc, argv).options(top).run(), vm);
+    } catch (const po::error& e) {
+      throw UsageError("", e.what());
+    }
+    if (vm.count("help")) {
+      std::cout << kUsage;
+      return 0;
+    }
+    if (vm.count("version")) {
+      std::cout << "lituya " << lituya::cli::kVersion << " (commit " << lituya::cli::kCommit
+                << ")\n";
+      return 0;
+    }
+    if (argc > 1) throw UsageError("", "no command given");
+    std::cerr << kUsage;
+    return 1;
+  }
+  const auto command = std::find_if(table.begin(), table.end(),
+                                    [&](const Command& c) { return c.name == o.command; });
+  if (command == table.end()) throw UsageError("", "unknown command '" + o.command + "'");
+
+  po::options_description accepted = command->options;
+  accepted.add_options()("command", po::value<std::string>(), "")("input", po::value(&o.input), "");
   po::positional_options_description positional;
   positional.add("command", 1).add("input", 1);
   po::variables_map vm;
-  po::store(po::command_line_parser(argc, argv).options(named).positional(positional).run(), vm);
-  po::notify(vm);
-  if (vm.count("help") || o.command.empty()) {
-    std::cout << kUsage;
-    std::exit(o.command.empty() && !vm.count("help") ? 1 : 0);
+  try {
+    po::store(po::command_line_parser(argc, argv).options(accepted).positional(positional).run(),
+              vm);
+    po::notify(vm);
+  } catch (const po::unknown_option& e) {
+    // An option of another command gets a message that says so, not just "unrecognised".
+    // Long names are looked up without their "--", short ones with their "-" ("-t4" is the
+    // short option "-t" with its value attached).
+    const std::string name = e.get_option_name();
+    const std::string key = name.rfind("--", 0) == 0 ? name.substr(2) : name.substr(0, 2);
+    std::string owners;
+    for (const Command& c : table)
+      if (c.options.find_nothrow(key, /*approx=*/false, /*long_ignore_case=*/false,
+                                 /*short_ignore_case=*/false))
+        owners += (owners.empty() ? "" : ", ") + c.name;
+    if (owners.empty()) throw UsageError(o.command, e.what());
+    throw UsageError(o.command, "'lituya " + o.command + "' does not take " +
+                                    (name.rfind("--", 0) == 0 ? name : key) +
+                                    " (it is an option of: " + owners + ")");
+  } catch (const po::too_many_positional_options_error&) {
+    throw UsageError(o.command,
+                     command->input.empty()
+                         ? "'lituya " + o.command + "' takes no argument"
+                         : "'lituya " + o.command + "' takes one argument, " + command->input);
+  } catch (const po::error& e) {
+    throw UsageError(o.command, e.what());
   }
-  if (o.threads < 1) throw po::error("--threads must be at least 1");
-  return o;
+  if (vm.count("help")) {
+    print_help(std::cout, *command);
+    return 0;
+  }
+  if (o.quiet && o.verbose) throw UsageError(o.command, "--quiet and --verbose exclude each other");
+  if (o.threads < 1) throw UsageError(o.command, "--threads must be at least 1");
+  if (vm.count("threads")) o.threads_source = "--threads";
+  if (command->input.empty() && !o.input.empty())
+    throw UsageError(o.command,
+                     "'lituya " + o.command + "' takes no argument (got '" + o.input + "')");
+  if (!command->input.empty() && o.input.empty())
+    throw UsageError(o.command, "'lituya " + o.command + "' needs " + command->input);
+  return -1;
+}
+
+// Where --quiet sends everything but errors.
+class NullBuffer : public std::streambuf {
+ protected:
+  int overflow(int c) override { return traits_type::not_eof(c); }
+  std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+};
+
+// --quiet silences std::cout and std::cerr as a whole (the libraries print summaries and
+// warnings there); errors still reach the terminal through errors(), which keeps stderr's
+// own buffer. The streams are restored when main returns, before the buffer goes away.
+class QuietScope {
+ public:
+  QuietScope() : errors_(std::cerr.rdbuf()) {}
+  ~QuietScope() {
+    if (!active_) return;
+    std::cout.rdbuf(cout_);
+    std::cerr.rdbuf(cerr_);
+    std::clog.rdbuf(clog_);
+  }
+  QuietScope(const QuietScope&) = delete;
+  QuietScope& operator=(const QuietScope&) = delete;
+
+  void enable() {
+    std::cout.flush();
+    cout_ = std::cout.rdbuf(&null_);
+    cerr_ = std::cerr.rdbuf(&null_);
+    clog_ = std::clog.rdbuf(&null_);
+    active_ = true;
+  }
+  std::ostream& errors() { return errors_; }
+
+ private:
+  NullBuffer null_;
+  std::ostream errors_;
+  bool active_ = false;
+  std::streambuf* cout_ = nullptr;
+  std::streambuf* cerr_ = nullptr;
+  std::streambuf* clog_ = nullptr;
+};
+
+// --verbose: how long each step took.
+class StepTimer {
+ public:
+  StepTimer(const Options& o, const char* step) : verbose_(o.verbose), step_(step) {}
+  ~StepTimer() {
+    if (!verbose_) return;
+    const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start_;
+    const auto precision = std::cerr.precision(3);
+    std::cerr << "lituya: " << step_ << " took " << wall.count() << " s\n";
+    std::cerr.precision(precision);
+  }
+  StepTimer(const StepTimer&) = delete;
+  StepTimer& operator=(const StepTimer&) = delete;
+
+ private:
+  bool verbose_;
+  const char* step_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// The progress line of a solve or sweep: none with --quiet.
+std::ostream* progress_stream(const Options& o) {
+  return o.quiet ? nullptr : &std::cerr;
 }
 
 fs::path default_case(const std::string& scene) {
   return fs::path(scene).parent_path() / "case";
 }
 
-void require_input(const Options& o, const char* what) {
-  if (o.input.empty()) throw po::error(std::string("'lituya ") + o.command + "' needs " + what);
-}
-
-void run_post(const fs::path& case_folder, bool force) {
+void run_post(const fs::path& case_folder, const Options& o) {
+  StepTimer timer(o, "post");
   if (!fs::exists(case_folder / "post.toml")) {
     std::cout << "post: skipped (the scene has no [post] table)\n";
     return;
   }
-  lituya::post::postprocess(case_folder, case_folder / "post", force);
+  lituya::post::postprocess(case_folder, case_folder / "post", o.force);
   std::cout << "post: CSV tables and PNG plots in " << (case_folder / "post").string() << "\n";
 }
 
 void run_solve(const fs::path& case_folder, const Options& o) {
+  StepTimer timer(o, "solve");
   lituya::solver::SolveOptions options;
   options.threads = o.threads;
   options.overwrite = o.force;
-  options.progress = &std::cerr;
+  options.progress = progress_stream(o);
   lituya::solver::solve_case(case_folder, options);
   std::cout << "solve: VTU series in " << (case_folder / "output").string()
             << " (open the .pvd files in ParaView)\n";
@@ -124,17 +456,21 @@ void run_solve(const fs::path& case_folder, const Options& o) {
 
 // Exit code of a sweep in which at least one run failed (the others are complete).
 constexpr int kSweepRunFailed = 5;
+// Exit code of `lituya verify` when at least one check failed.
+constexpr int kVerifyFailed = 4;
 
-int run_sweep(const Options& o) {
+int run_sweep(const Options& o, std::ostream& errors) {
+  StepTimer timer(o, "sweep");
   lituya::sweep::SweepDefinition definition;
   if (lituya::sweep::is_sweep_file(o.input)) {
     if (!o.parameter.empty() || !o.values.empty())
-      throw po::error("give --parameter and --values in the sweep file " + o.input +
-                      " or on the command line with a scene, not both");
+      throw UsageError("sweep", "give --parameter and --values in the sweep file " + o.input +
+                                    " or on the command line with a scene, not both");
     definition = lituya::sweep::read_sweep_file(o.input);
   } else {
     if (o.parameter.empty() || o.values.empty())
-      throw po::error("'lituya sweep SCENE.toml' needs --parameter KEY and --values V1,V2,...");
+      throw UsageError("sweep",
+                       "'lituya sweep SCENE.toml' needs --parameter KEY and --values V1,V2,...");
     definition.scene = o.input;
     definition.parameter = o.parameter;
     definition.values = lituya::sweep::parse_value_list(o.values);
@@ -149,69 +485,103 @@ int run_sweep(const Options& o) {
   lituya::sweep::SweepOptions options;
   options.threads = o.threads;
   options.overwrite = o.force;
-  options.progress = &std::cerr;
+  options.progress = progress_stream(o);
   options.progress_is_terminal = isatty(fileno(stderr));
   options.report = &std::cout;
   options.dry_run = o.dry_run;
   const lituya::sweep::SweepResult result = lituya::sweep::run_sweep(definition, options);
-  return result.all_ok() ? 0 : kSweepRunFailed;
+  if (result.all_ok()) return 0;
+  // Without --quiet the table names the failed runs; with it, this line is all there is.
+  if (o.quiet) {
+    const auto failed = std::count_if(result.runs.begin(), result.runs.end(), [](const auto& run) {
+      return run.status != lituya::sweep::RunStatus::kOk;
+    });
+    errors << "lituya: sweep: " << failed << " of " << result.runs.size() << " runs failed (see "
+           << result.table.string() << ")\n";
+  }
+  return kSweepRunFailed;
 }
 
-void run_pre(const fs::path& scene, const fs::path& case_folder, bool force) {
-  auto s = lituya::pre::preprocess(scene, case_folder, force);
+void run_pre(const fs::path& scene, const fs::path& case_folder, const Options& o) {
+  StepTimer timer(o, "pre");
+  auto s = lituya::pre::preprocess(scene, case_folder, o.force);
   std::cout << "pre: " << s.dimension << "D case with " << s.nodes << " nodes, " << s.cells
             << " cells, " << s.points << " material points in " << case_folder.string() << "\n";
+}
+
+int run_verify(const Options& o, std::ostream& errors) {
+  StepTimer timer(o, "verify");
+  lituya::verify::RunnerOptions options;
+  options.full = o.full;
+  options.threads = o.threads;
+  options.overwrite = o.force;
+  options.only = o.cases;
+  options.report_folder = o.output.empty() ? fs::path("verification-report") : fs::path(o.output);
+  if (lituya::verify::run_verification(options)) return 0;
+  if (o.quiet)
+    errors << "lituya: verify: at least one check failed (see "
+           << (options.report_folder / "report.md").string() << ")\n";
+  return kVerifyFailed;
+}
+
+bool uses_threads(const std::string& command) {
+  return command != "pre" && command != "post";
+}
+
+int run_command(const Options& o, std::ostream& errors) {
+  if (o.verbose) {
+    std::cerr << "lituya " << lituya::cli::kVersion << " (commit " << lituya::cli::kCommit
+              << "): " << o.command;
+    if (uses_threads(o.command))
+      std::cerr << ", " << o.threads << (o.threads == 1 ? " thread" : " threads") << " ("
+                << o.threads_source << ")";
+    std::cerr << "\n";
+    // gmsh's own messages: the preprocessor opens gmsh with its terminal output off and has no
+    // switch for it yet, so --verbose cannot show them.
+  }
+  if (o.command == "pre") {
+    run_pre(o.input, o.output.empty() ? default_case(o.input) : fs::path(o.output), o);
+  } else if (o.command == "solve") {
+    run_solve(o.input, o);
+  } else if (o.command == "post") {
+    run_post(o.input, o);
+  } else if (o.command == "run") {
+    const fs::path case_folder = o.output.empty() ? default_case(o.input) : fs::path(o.output);
+    run_pre(o.input, case_folder, o);
+    run_solve(case_folder, o);
+    run_post(case_folder, o);
+  } else if (o.command == "verify") {
+    return run_verify(o, errors);
+  } else if (o.command == "sweep") {
+    return run_sweep(o, errors);
+  }
+  return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  QuietScope quiet;
+  Options o;
   try {
-    const Options o = parse(argc, argv);
-    if (o.command == "pre") {
-      require_input(o, "a scene file");
-      run_pre(o.input, o.output.empty() ? default_case(o.input) : fs::path(o.output), o.force);
-    } else if (o.command == "solve") {
-      require_input(o, "a case folder");
-      run_solve(o.input, o);
-    } else if (o.command == "post") {
-      require_input(o, "a case folder");
-      run_post(o.input, o.force);
-    } else if (o.command == "run") {
-      require_input(o, "a scene file");
-      const fs::path case_folder = o.output.empty() ? default_case(o.input) : fs::path(o.output);
-      run_pre(o.input, case_folder, o.force);
-      run_solve(case_folder, o);
-      run_post(case_folder, o.force);
-    } else if (o.command == "verify") {
-      lituya::verify::RunnerOptions options;
-      options.full = o.full;
-      options.threads = o.threads;
-      options.overwrite = o.force;
-      options.only = o.cases;
-      options.report_folder =
-          o.output.empty() ? fs::path("verification-report") : fs::path(o.output);
-      const bool all_passed = lituya::verify::run_verification(options);
-      return all_passed ? 0 : 4;
-    } else if (o.command == "sweep") {
-      require_input(o, "a scene file (with --parameter and --values) or a sweep file");
-      return run_sweep(o);
-    } else {
-      std::cerr << "lituya: unknown command '" << o.command << "'\n\n" << kUsage;
-      return 1;
-    }
-    return 0;
+    if (const int code = parse(argc, argv, o); code >= 0) return code;
+    if (o.quiet) quiet.enable();
+    return run_command(o, quiet.errors());
+  } catch (const UsageError& e) {
+    quiet.errors() << "lituya: " << e.what() << "\n" << help_hint(e.command) << "\n";
+    return 1;
   } catch (const lituya::InputError& e) {
-    std::cerr << "\nlituya: input error: " << e.what() << "\n";
+    quiet.errors() << "\nlituya: input error: " << e.what() << "\n";
     return 1;
   } catch (const lituya::RunError& e) {
-    std::cerr << "\nlituya: run stopped: " << e.what() << "\n";
+    quiet.errors() << "\nlituya: run stopped: " << e.what() << "\n";
     return 2;
   } catch (const po::error& e) {
-    std::cerr << "lituya: " << e.what() << "\n\n" << kUsage;
+    // Not expected (parse turns these into UsageError), but still the command line's fault.
+    quiet.errors() << "lituya: " << e.what() << "\n" << help_hint(o.command) << "\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "\nlituya: error: " << e.what() << "\n";
+    quiet.errors() << "\nlituya: error: " << e.what() << "\n";
     return 3;
   }
 }
