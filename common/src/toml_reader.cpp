@@ -1,9 +1,11 @@
 #include "lituya/common/toml_reader.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "lituya/common/input_error.hpp"
+#include "lituya/common/safe_name.hpp"
 
 namespace lituya {
 
@@ -36,6 +38,12 @@ std::optional<double> as_number(const toml::node& n) {
   if (auto v = n.as_floating_point()) return v->get();
   if (auto v = n.as_integer()) return static_cast<double>(v->get());
   return std::nullopt;
+}
+
+// How a non-finite TOML float was written, for messages ("-inf", "nan").
+std::string non_finite_text(double v) {
+  if (std::isnan(v)) return "nan";
+  return v > 0 ? "inf" : "-inf";
 }
 
 std::string join(const std::vector<std::string>& items) {
@@ -81,6 +89,8 @@ double TomlTable::number(std::string_view key) const {
   const toml::node& n = required(key);
   auto v = as_number(n);
   if (!v) fail(where(key) + " must be a number, found " + type_name(n), key);
+  if (!std::isfinite(*v))
+    fail(where(key) + " = " + non_finite_text(*v) + " is not a finite number", key);
   return *v;
 }
 
@@ -132,6 +142,15 @@ std::string TomlTable::string_or(std::string_view key, std::string fallback) con
   return has(key) ? string(key) : fallback;
 }
 
+std::string TomlTable::safe_name(std::string_view key) const {
+  std::string v = string(key);
+  if (auto problem = safe_name_problem(v))
+    fail(where(key) + " = " + quoted_for_message(v) + " is not a valid name: " + *problem + " (" +
+             std::string(safe_name_rule()) + ")",
+         key);
+  return v;
+}
+
 std::string TomlTable::choice(std::string_view key, const std::vector<std::string>& choices) const {
   std::string v = string(key);
   for (const auto& c : choices)
@@ -152,6 +171,11 @@ std::vector<double> TomlTable::numbers(std::string_view key) const {
   for (const auto& item : *arr) {
     auto v = as_number(item);
     if (!v) fail(where(key) + " must contain only numbers, found " + type_name(item), key);
+    // At the element's own line: an array may span several lines.
+    if (!std::isfinite(*v))
+      throw InputError(
+          file_, line_of_node(item, line_of(key)),
+          where(key) + " holds " + non_finite_text(*v) + ", which is not a finite number");
     out.push_back(*v);
   }
   return out;

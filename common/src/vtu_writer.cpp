@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lituya/common/xml_escape.hpp"
+
 namespace lituya {
 
 namespace {
@@ -78,7 +80,7 @@ void VtuWriter::write(const std::filesystem::path& file) const {
   auto declare = [&](const std::string& type, const std::string& name, int comps, const void* data,
                      std::uint64_t bytes) {
     head << "        <DataArray type=\"" << type << "\"";
-    if (!name.empty()) head << " Name=\"" << name << "\"";
+    if (!name.empty()) head << " Name=\"" << xml_escaped(name) << "\"";
     head << " NumberOfComponents=\"" << comps << "\" format=\"appended\" offset=\"" << offset
          << "\"/>\n";
     blocks.push_back({data, bytes});
@@ -121,7 +123,7 @@ void PvdWriter::add(double time, const std::string& dataset) {
     << "  <Collection>\n";
   s << std::setprecision(10);
   for (const auto& [t, f] : entries_)
-    s << "    <DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << f << "\"/>\n";
+    s << "    <DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << xml_escaped(f) << "\"/>\n";
   s << "  </Collection>\n</VTKFile>\n";
   write_atomically(file_, s.str(), {}, "");
 }

@@ -63,6 +63,38 @@ TEST(TomlReader, WrongTypeAndRangeAndSyntax) {
   EXPECT_NE(msg.find("cannot open"), std::string::npos) << msg;
 }
 
+// TOML spells inf and nan as floats; gravity = [0, -inf] once passed `lituya pre`. Every
+// number getter refuses them, at the line of the key (of the element, in a split array).
+TEST(TomlReader, NonFiniteNumbersAreRefused) {
+  auto path = write_file("lituya_toml_nonfinite.toml",
+                         "a = inf\nb = nan\nc = -inf\ng = [0.0, -inf]\n"
+                         "h = [0.0,\n     nan]\n");
+  lituya::TomlDocument doc(path);
+  auto root = doc.root();
+  const std::pair<const char*, int> scalars[] = {{"a", 1}, {"b", 2}, {"c", 3}};
+  for (const auto& [key, line] : scalars) {
+    for (auto get : {+[](const lituya::TomlTable&t, const char*k) { t.number(k); },
+                     +[](const lituya::TomlTable&t, const char*k) { t.number_or(k, 1.0); },
+                     +[](const lituya::TomlTable&t, const char*k) { t.number_in(k, -1, 1); }}) {
+      std::string msg = input_error_message([&] { get(root, key); });
+      EXPECT_NE(msg.find("lituya_toml_nonfinite.toml:" + std::to_string(line) + ":"),
+                std::string::npos)
+          << msg;
+      EXPECT_NE(msg.find("not a finite number"), std::string::npos) << msg;
+    }
+  }
+  std::string msg = input_error_message([&] { root.numbers("g"); });
+  EXPECT_NE(msg.find("lituya_toml_nonfinite.toml:4:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("-inf"), std::string::npos) << msg;
+  msg = input_error_message([&] { root.numbers("h"); });
+  EXPECT_NE(msg.find("lituya_toml_nonfinite.toml:6:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("nan"), std::string::npos) << msg;
+  // A literal beyond the double range: refused by the parser or as non-finite, never inf.
+  auto big = write_file("lituya_toml_big.toml", "k = 1e400\n");
+  msg = input_error_message([&] { lituya::TomlDocument(big).root().number("k"); });
+  EXPECT_NE(msg.find("lituya_toml_big.toml:1"), std::string::npos) << msg;
+}
+
 TEST(TomlReader, HeaderFormatAndVersionChecked) {
   auto path = write_file("lituya_toml_header.toml", "format = \"lituya-scene\"\nversion = 9\n");
   lituya::TomlDocument doc(path);

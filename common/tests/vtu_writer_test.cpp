@@ -8,6 +8,8 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <filesystem>
@@ -60,6 +62,43 @@ TEST(PvdWriter, ListsEveryEntry) {
   s << in.rdbuf();
   EXPECT_NE(s.str().find("timestep=\"0.25\""), std::string::npos);
   EXPECT_NE(s.str().find("a_0001.vtu"), std::string::npos);
+}
+
+// Names are checked where they are read, but the writers must not rely on it: a .pvd once
+// listed a stage "a&b" unescaped and was not well-formed XML. An XML parser (expat, through
+// VTK) must accept the file and give the attribute back unchanged.
+TEST(PvdWriter, EscapesFileNamesAndParsesBack) {
+  auto file = std::filesystem::temp_directory_path() / "lituya_writer_escape_test.pvd";
+  const std::string dataset = "a&b<c>\"d'e_0000.vtu";
+  lituya::PvdWriter pvd(file);
+  pvd.add(0.5, dataset);
+
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetFileName(file.c_str());
+  ASSERT_EQ(parser->Parse(), 1) << "the .pvd is not well-formed XML";
+  vtkXMLDataElement* collection = parser->GetRootElement()->FindNestedElementWithName("Collection");
+  ASSERT_NE(collection, nullptr);
+  ASSERT_EQ(collection->GetNumberOfNestedElements(), 1);
+  EXPECT_EQ(std::string(collection->GetNestedElement(0)->GetAttribute("file")), dataset);
+}
+
+TEST(VtuWriter, EscapesArrayNames) {
+  lituya::VtuWriter w;
+  std::vector<double> xyz = {0, 0, 0, 1, 0, 0};
+  w.set_points(xyz);
+  w.set_vertex_cells();
+  std::vector<double> values = {1.5, 2.5};
+  const std::string name = "p&<\"q\">'";
+  w.add_point_data(name, 1, values);
+  auto file = std::filesystem::temp_directory_path() / "lituya_writer_escape_test.vtu";
+  w.write(file);
+
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkDataArray* array = reader->GetOutput()->GetPointData()->GetArray(name.c_str());
+  ASSERT_NE(array, nullptr) << "array name did not survive the round trip";
+  EXPECT_DOUBLE_EQ(array->GetTuple1(1), 2.5);
 }
 
 TEST(OutputFolder, RefusesToOverwriteWithoutForce) {

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "lituya/common/input_error.hpp"
+#include "lituya/common/safe_name.hpp"
 #include "lituya/common/toml_reader.hpp"
 #include "lituya/pre/case_writer.hpp"
 #include "lituya/pre/seeding.hpp"
@@ -309,11 +310,17 @@ void read_post(const TomlTable& root, const fs::path& scene_file, Scene& scene) 
   // (the file parsed once already, so it parses again).
   const toml::table whole = toml::parse_file(scene_file.string());
   settings.table = *whole["post"].as_table();
-  if (post->has("stage")) {
-    const std::string stage = post->string("stage");
+  // Both keys name the output series `lituya post` opens (<stage>_points.pvd,
+  // <liquid_stage>_liquid.pvd), so they must be stage names, which are safe in file names.
+  for (const char* key : {"stage", "liquid_stage"}) {
+    if (!post->has(key)) continue;
+    const std::string stage = post->string(key);
     bool found = false;
     for (const auto& s : scene.stages) found = found || s.name == stage;
-    if (!found) post->fail("'post.stage' = \"" + stage + "\" is not a [[stage]] name", "stage");
+    if (!found)
+      post->fail(std::string("'post.") + key + "' = " + quoted_for_message(stage) +
+                     " is not a [[stage]] name",
+                 key);
   }
   if (post->has("track_materials")) {
     for (const std::string& name : post->strings("track_materials")) {

@@ -391,5 +391,53 @@ TEST_F(BadScene, HydrostaticNeedsGravityAlongMinusY) {
                {"\"hydrostatic\"", "gravity along -y", "\"zero\""});
 }
 
+// Names that become file names (issue 9): each class that once passed `lituya pre` (and gave
+// a .pvd that is not XML, or failed at the first write with exit code 3) is refused at the
+// line of the name, with the allowed characters. The values are TOML literal or basic
+// strings as a user writes them.
+TEST_F(BadScene, StageNamesOutsideTheSafeAlphabet) {
+  const std::pair<std::string, std::string> names[] = {{"'a&b'", "'&'"},
+                                                       {"'<x>'", "'<'"},
+                                                       {"'a\"b'", "'\"'"},
+                                                       {"'grav/ity'", "'/'"},
+                                                       {"''", "empty"},
+                                                       {"'..'", "starts with '.'"},
+                                                       {"\"a\\nb\"", "line break"},
+                                                       {"'a b'", "a space"},
+                                                       {"'a\\b'", "'\\'"}};
+  for (const auto& [toml_value, reason] : names) {
+    const auto scene = replaced(kScene, "name = \"gravity\"", "name = " + toml_value);
+    expect_error(scene, "scene.toml", line_of(scene, "name = " + toml_value),
+                 {"'stage[0].name'", reason, "letters, digits, '_', '-' and '.'"});
+  }
+}
+
+TEST_F(BadScene, MaterialNamesOutsideTheSafeAlphabet) {
+  for (const std::string toml_value : {"'sand&gravel'", "''", "\"a\\nb\""}) {
+    const auto scene = replaced(kScene, "name = \"sand\"", "name = " + toml_value);
+    expect_error(scene, "scene.toml", line_of(scene, "name = " + toml_value),
+                 {"'material[0].name'", "not a valid name"});
+  }
+}
+
+// post.liquid_stage names the liquid series `lituya post` opens, like post.stage.
+TEST_F(BadScene, PostLiquidStageMustBeAStage) {
+  const auto scene = kScene + "\n[post]\nliquid_stage = \"../gravity\"\n";
+  expect_error(scene, "scene.toml", line_of(scene, "liquid_stage"),
+               {"'post.liquid_stage'", "\"../gravity\"", "not a [[stage]] name"});
+}
+
+// TOML has inf and nan; gravity = [0, -inf] once passed `lituya pre`.
+TEST_F(BadScene, GravityMustBeFinite) {
+  for (const std::string value : {"[0.0, -inf]", "[nan, -9.81]", "[0.0, +inf]"}) {
+    const auto scene = replaced(kScene, "gravity = [0.0, -9.81]", "gravity = " + value);
+    expect_error(scene, "scene.toml", line_of(scene, "gravity"),
+                 {"'gravity'", "not a finite number"});
+  }
+  const auto scene = replaced(kScene, "cell_size = 0.25", "cell_size = nan");
+  expect_error(scene, "scene.toml", line_of(scene, "cell_size"),
+               {"'mesh.cell_size'", "not a finite number"});
+}
+
 }  // namespace
 }  // namespace lituya::pre

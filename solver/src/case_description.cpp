@@ -45,7 +45,10 @@ Material read_water(const TomlTable& t, Material m) {
 
 Material read_material(const TomlTable& t) {
   Material m;
-  m.name = t.string("name");
+  // Material names reach regions, post.toml, sweep keys and messages, and may name files
+  // later (per-material output): the same safe alphabet as stage names, so a material named
+  // "" or "a\nb" is refused at the line that names it instead of breaking something later.
+  m.name = t.safe_name("name");
   std::string model = t.choice("model", {"mohr-coulomb", "linear-elastic", "water"});
   if (model == "water") {
     m.model = MaterialModel::kWater;
@@ -140,7 +143,9 @@ BoundaryCondition read_boundary(const TomlTable& t, int dimension) {
 
 Stage read_stage(const TomlTable& t) {
   Stage s;
-  s.name = t.string("name");
+  // The output writer names files after the stage (<stage>_points.pvd): checked here, for
+  // scene.toml and for a hand-edited stages.toml alike, and not at the first write.
+  s.name = t.safe_name("name");
   std::string type = t.choice("type", {"quasi-static", "dynamic"});
   s.type = type == "quasi-static" ? StageType::kQuasiStatic : StageType::kDynamic;
   s.duration = t.number_in("duration", 1e-12, 1e9);

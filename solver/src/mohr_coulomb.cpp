@@ -331,6 +331,15 @@ double MohrCoulomb::update(Voigt6& stress, const Voigt6& strain_increment) const
   // Elastic predictor: eq. (19) with the whole increment taken as elastic.
   Voigt6 trial = stress;
   elastic_update(elastic_, trial, strain_increment);
+  // A NaN or inf in the stress or the increment leaves a NaN or inf in the trial stress. The
+  // return mapping must not see it: its comparisons are all false for NaN, so it would skip
+  // every candidate and return a finite stress (uninitialised or the apex), and the solver's
+  // finiteness check, which looks at the stress, would miss the broken step. One check here
+  // keeps the stress non-finite.
+  if (!trial.allFinite()) {
+    stress = trial;
+    return std::numeric_limits<double>::quiet_NaN();
+  }
 
   if (trial[4] == 0.0 && trial[5] == 0.0) {
     // Fast path (2D plane strain, or any state with yz = xz = 0): zz is a principal direction

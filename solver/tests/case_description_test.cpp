@@ -274,4 +274,41 @@ TEST(CaseDescription, GivenDampingTimesAreWrittenBackAlone) {
   EXPECT_FALSE(read_back.liquid_pic_damping_time.has_value());
 }
 
+// stages.toml and materials.toml can be edited by hand between `lituya pre` and `lituya
+// solve`: the case loader applies the same checks as the scene reader, so a stage name that
+// cannot make a file name or a non-finite gravity stops at its line, before any output.
+TEST(CaseDescription, HandEditedCaseRefusesUnsafeNamesAndNonFiniteGravity) {
+  const auto folder = std::filesystem::temp_directory_path() / "lituya_hand_edited_case";
+  std::filesystem::create_directories(folder);
+  const std::string head = "format = \"lituya-stages\"\nversion = 1\ndimension = 2\n";  // lines 1-3
+  const std::string files =
+      "geometry = \"geometry.vtu\"\npoints = \"points.vtu\"\nmaterials = \"materials.toml\"\n";
+  auto error_in = [&](const std::string& gravity, const std::string& stage_name) {
+    std::ofstream(folder / "stages.toml") << head << "gravity = " << gravity << "\n"
+                                          << files << "\n[[stage]]\nname = " << stage_name
+                                          << "\ntype = \"dynamic\"\nduration = 1.0\n";
+    try {
+      read_case(folder.string());
+    } catch (const lituya::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  std::string msg = error_in("[0.0, -9.81]", "'grav/ity'");
+  EXPECT_NE(msg.find("stages.toml:10:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("'/'"), std::string::npos) << msg;
+  msg = error_in("[0.0, -9.81]", "'a&b'");
+  EXPECT_NE(msg.find("stages.toml:10:"), std::string::npos) << msg;
+  msg = error_in("[0.0, -inf]", "'release'");
+  EXPECT_NE(msg.find("stages.toml:4:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("not a finite number"), std::string::npos) << msg;
+
+  std::string bad_material = kSand;
+  bad_material.replace(bad_material.find("\"sand\""), 6, "\"..\"");
+  msg = error_reading_material(bad_material);
+  EXPECT_NE(msg.find("lituya_material_test.toml:2:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("starts with '.'"), std::string::npos) << msg;
+  std::filesystem::remove_all(folder);
+}
+
 }  // namespace

@@ -1,4 +1,5 @@
 // Isotropic linear elasticity, eq. (19) without plastic strain: closed-form responses.
+#include <limits>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
@@ -27,6 +28,23 @@ TEST(LinearElastic, RejectsInvalidConstants) {
   EXPECT_THROW(ElasticConstants::from_young_poisson(0.0, 0.3), std::invalid_argument);
   EXPECT_THROW(ElasticConstants::from_young_poisson(1e6, 0.5), std::invalid_argument);
   EXPECT_THROW(ElasticConstants::from_young_poisson(1e6, -1.0), std::invalid_argument);
+}
+
+// The solver's finiteness check looks at the stress: a NaN or inf in any strain component
+// must reach it, also with lambda = 0 (nu = 0), where the volumetric term is 0 * inf = NaN.
+TEST(LinearElastic, NonFiniteStrainGivesANonFiniteStress) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double nu : {0.0, 0.3}) {
+    const ElasticConstants c = ElasticConstants::from_young_poisson(20e6, nu);
+    for (int k = 0; k < 6; ++k) {
+      for (double bad : {std::numeric_limits<double>::quiet_NaN(), inf, -inf}) {
+        Voigt6 stress = Voigt6::Constant(-1e5), strain = Voigt6::Constant(1e-4);
+        strain[k] = bad;
+        elastic_update(c, stress, strain);
+        EXPECT_FALSE(stress.allFinite()) << "nu " << nu << ", component " << k << " = " << bad;
+      }
+    }
+  }
 }
 
 TEST(LinearElastic, UniaxialStrainIncrement) {

@@ -741,6 +741,39 @@ TEST(MohrCoulomb, TrescaAndCohesionlessFromZeroStress) {
   }
 }
 
+// A NaN or inf strain increment (or stress) must give a non-finite stress: the solver detects
+// a broken step by the stress alone. Before the check in update(), the return mapping's
+// comparisons were all false for NaN and it returned a finite stress (e.g. the apex).
+TEST(MohrCoulomb, NonFiniteInputGivesANonFiniteStress) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const MohrCoulomb models[] = {
+      MohrCoulomb(10e6, 0.3, 30, 0, 0, 0),                // cohesionless: cut-off at the apex
+      MohrCoulomb(10e6, 0.3, 30, 10, 10 * kPa, kInf),     // no cut-off
+      MohrCoulomb(10e6, 0.3, 30, 10, 10 * kPa, 2 * kPa),  // cut-off below the apex
+      MohrCoulomb(10e6, 0.0, 0, 0, 10 * kPa, kInf)};      // Tresca, lambda = 0
+  const Voigt6 starts[] = {diagonal(-100 * kPa, -120 * kPa, -80 * kPa), Voigt6::Zero()};
+  for (const MohrCoulomb& model : models) {
+    for (const Voigt6& start : starts) {
+      for (int k = 0; k < 6; ++k) {  // k < 4 keeps yz = xz = 0: the plane strain fast path
+        for (double bad : {nan, kInf, -kInf}) {
+          Voigt6 de;
+          de << -1e-3, 2e-4, 0, 5e-4, 0, 0;  // plastic for every model
+          de[k] = bad;
+          Voigt6 s = start;
+          const double plastic = model.update(s, de);
+          EXPECT_FALSE(s.allFinite()) << "component " << k << " = " << bad << ": " << s.transpose();
+          EXPECT_TRUE(std::isnan(plastic)) << "component " << k << " = " << bad;
+          Voigt6 broken = start;  // a stress that is already broken stays broken
+          broken[k] = bad;
+          de[k] = 0;
+          model.update(broken, de);
+          EXPECT_FALSE(broken.allFinite()) << "stress component " << k << " = " << bad;
+        }
+      }
+    }
+  }
+}
+
 TEST(PrincipalStresses, AccurateForRepeatedValues) {
   std::mt19937 rng(41);
   std::uniform_real_distribution<double> u(-1, 1);

@@ -3,6 +3,9 @@
 // stages, post). Every getter names the file, the line and what was expected when the value
 // is missing or of the wrong type, and `finish()` rejects keys that nobody read, so a typo
 // such as `frction_angle` is an error instead of a silently ignored setting.
+// TOML allows the floats inf, -inf and nan; no Lituya key has a use for them and they would
+// only surface as a non-finite state later (gravity = [0, -inf] passed `lituya pre`), so the
+// number getters refuse them for every key.
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -25,6 +28,7 @@ class TomlTable {
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }
 
+  // A finite number (an integer is accepted too).
   double number(std::string_view key) const;
   double number_or(std::string_view key, double fallback) const;
   // A number that must lie in [lo, hi] (inclusive); `what` says what it is for the message.
@@ -35,10 +39,14 @@ class TomlTable {
   bool boolean_or(std::string_view key, bool fallback) const;
   std::string string(std::string_view key) const;
   std::string string_or(std::string_view key, std::string fallback) const;
+  // A name that becomes part of a file name or an identifier in other files (stage and
+  // material names): a string that follows the safe alphabet of safe_name.hpp.
+  std::string safe_name(std::string_view key) const;
   // A string that must be one of `choices`.
   std::string choice(std::string_view key, const std::vector<std::string>& choices) const;
   std::string choice_or(std::string_view key, const std::vector<std::string>& choices,
                         std::string fallback) const;
+  // An array of finite numbers.
   std::vector<double> numbers(std::string_view key) const;
   std::vector<double> numbers_or(std::string_view key, std::vector<double> fallback) const;
   std::vector<std::string> strings(std::string_view key) const;

@@ -17,7 +17,9 @@ struct ElasticConstants {
   double constrained_modulus() const { return lame_lambda + 2 * shear_modulus; }
 };
 
-// sigma += D^e : d_eps (eq. 19 without plastic part).
+// sigma += D^e : d_eps (eq. 19 without plastic part). A NaN or inf in the stress or the
+// increment gives a non-finite stress (plain IEEE arithmetic, every input has a non-zero
+// coefficient), which the solver's finiteness check relies on.
 void elastic_update(const ElasticConstants& elastic, Voigt6& stress,
                     const Voigt6& strain_increment);
 
@@ -28,6 +30,7 @@ class MohrCoulomb {
               double dilatancy_angle_deg, double cohesion, double tensile_strength);
   // Elastic predictor then return mapping in principal stresses (plane, edges, apex, tension
   // cut-off). Returns the equivalent plastic strain increment sqrt(2/3 d_eps_p : d_eps_p).
+  // A NaN or inf in the stress or the increment gives a non-finite stress and returns NaN.
   double update(Voigt6& stress, const Voigt6& strain_increment) const;
   // f of eq. (21) written tension positive and scaled by 2:
   // f = (s_max - s_min) + (s_max + s_min) sin(phi) - 2 c cos(phi); f <= 0 is admissible.
