@@ -1,7 +1,9 @@
 // lituya: pre | solve | post | run | verify | sweep
 // Every user error ends with a message naming the file and line (exit code 1); a run that
 // goes unstable ends with a diagnostic naming the step, point and field (exit code 2). A sweep
-// records failed runs and goes on; it ends with exit code 5 when any run failed.
+// records failed runs and goes on; it ends with exit code 5 when any run failed. SIGINT or
+// SIGTERM during a solve stops it cleanly with exit code 130 or 143 (128 + the signal).
+// `post` refuses a run that did not complete with exit code 6.
 // A wrong command line is a usage error: a message and a hint naming the command's --help, on
 // stderr, exit code 1. Each command accepts only its own options.
 #include <omp.h>
@@ -19,8 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "lituya/cli/version.hpp"
 #include "lituya/common/input_error.hpp"
+#include "lituya/common/provenance.hpp"
+#include "lituya/common/stop_request.hpp"
 #include "lituya/post/postprocess.hpp"
 #include "lituya/pre/preprocess.hpp"
 #include "lituya/solver/solve.hpp"
@@ -39,7 +42,8 @@ const char* kUsage =
 usage:
   lituya pre    SCENE.toml [-o CASE] [--force]     mesh the scene, seed points, write the case
   lituya solve  CASE [--threads N] [--force]       run the case's stages, write CASE/output
-  lituya post   CASE [--force]                     runout, profiles, wall height -> CASE/post
+  lituya post   CASE [--force] [--allow-incomplete]
+                                                   runout, profiles, wall height -> CASE/post
   lituya run    SCENE.toml [-o CASE] [--threads N] [--force]   pre + solve + post
   lituya verify [--full] [-o REPORT] [--threads N] [--case NAME] [--force]
                                                    run the verification cases, write a report
@@ -128,6 +132,7 @@ struct Options {
   std::string values;                 // sweep
   std::vector<std::string> measures;  // sweep
   bool dry_run = false;               // sweep
+  bool allow_incomplete = false;      // post
 };
 
 // One command: its synopsis, what it does, and the only options it accepts.
@@ -190,11 +195,15 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
     table.push_back(std::move(c));
   }
   {
-    Command c = make("post", "lituya post CASE [--force]",
+    Command c = make("post", "lituya post CASE [--force] [--allow-incomplete]",
                      "Measure runout, profiles, wall height, wave gauges and the leading wave; "
-                     "write CSV tables and PNG plots to CASE/post.",
+                     "write CSV tables and PNG plots to CASE/post.\nA run that did not complete "
+                     "(CASE/output/summary.toml missing or completed = false) is\nrefused with "
+                     "exit code 6 unless --allow-incomplete is given.",
                      "a case folder");
     force(c.options, "write into CASE/post when it already holds files");
+    c.options.add_options()("allow-incomplete", po::bool_switch(&o.allow_incomplete),
+                            "measure a run that was stopped, failed or killed");
     common(c.options);
     table.push_back(std::move(c));
   }
@@ -305,8 +314,7 @@ int parse(int argc, char** argv, Options& o) {
       return 0;
     }
     if (vm.count("version")) {
-      std::cout << "lituya " << lituya::cli::kVersion << " (commit " << lituya::cli::kCommit
-                << ")\n";
+      std::cout << lituya::version_line() << "\n";
       return 0;
     }
     if (argc > 1) throw UsageError("", "no command given");
@@ -433,8 +441,25 @@ fs::path default_case(const std::string& scene) {
   return fs::path(scene).parent_path() / "case";
 }
 
+// Exit code of `lituya post` on a run that did not complete (nothing was measured).
+constexpr int kIncompleteRun = 6;
+
+// Measuring a run that stopped, failed or was killed would give numbers that look like
+// results of the whole scene; `post` says so and stops unless the user asks to go on.
+struct IncompleteRun : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 void run_post(const fs::path& case_folder, const Options& o) {
   StepTimer timer(o, "post");
+  // Throws InputError (exit 1) when the folder is not a case.
+  if (const auto problem = lituya::solver::incomplete_run_problem(case_folder)) {
+    if (!o.allow_incomplete)
+      throw IncompleteRun(*problem +
+                          ". Nothing was measured; pass --allow-incomplete to "
+                          "measure the output there is");
+    std::cerr << "lituya: warning: " << *problem << "; measuring the output there is\n";
+  }
   if (!fs::exists(case_folder / "post.toml")) {
     std::cout << "post: skipped (the scene has no [post] table)\n";
     return;
@@ -449,6 +474,9 @@ void run_solve(const fs::path& case_folder, const Options& o) {
   options.threads = o.threads;
   options.overwrite = o.force;
   options.progress = progress_stream(o);
+  // SIGINT/SIGTERM during the solve stop it cleanly (RunStopped); outside it they end the
+  // process as usual, since nothing else would notice the request.
+  lituya::StopSignalScope stop_on_signal;
   lituya::solver::solve_case(case_folder, options);
   std::cout << "solve: VTU series in " << (case_folder / "output").string()
             << " (open the .pvd files in ParaView)\n";
@@ -530,8 +558,7 @@ bool uses_threads(const std::string& command) {
 
 int run_command(const Options& o, std::ostream& errors) {
   if (o.verbose) {
-    std::cerr << "lituya " << lituya::cli::kVersion << " (commit " << lituya::cli::kCommit
-              << "): " << o.command;
+    std::cerr << lituya::version_line() << ": " << o.command;
     if (uses_threads(o.command))
       std::cerr << ", " << o.threads << (o.threads == 1 ? " thread" : " threads") << " ("
                 << o.threads_source << ")";
@@ -576,6 +603,14 @@ int main(int argc, char** argv) {
   } catch (const lituya::RunError& e) {
     quiet.errors() << "\nlituya: run stopped: " << e.what() << "\n";
     return 2;
+  } catch (const lituya::RunStopped& e) {
+    quiet.errors() << "\nlituya: " << e.what()
+                   << "; the output up to then is kept and summary.toml says completed = "
+                      "false\n";
+    return 128 + e.signal();  // as a shell reports a process ended by the signal
+  } catch (const IncompleteRun& e) {
+    quiet.errors() << "lituya: post: " << e.what() << "\n";
+    return kIncompleteRun;
   } catch (const po::error& e) {
     // Not expected (parse turns these into UsageError), but still the command line's fault.
     quiet.errors() << "lituya: " << e.what() << "\n" << help_hint(o.command) << "\n";

@@ -14,6 +14,7 @@
 
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/process_memory.hpp"
+#include "lituya/common/stop_request.hpp"
 #include "simulation_kernels.hpp"
 
 namespace lituya::solver {
@@ -385,7 +386,9 @@ StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback&
   double t = 0;
   int output_index = 0;
   if (on_output) on_output(stage, t, output_index++);
-  double next_output = stage.output_interval > 0 ? stage.output_interval : stage.duration;
+  // An output interval longer than the stage still ends the stage with its final state.
+  double next_output =
+      std::min(stage.output_interval > 0 ? stage.output_interval : stage.duration, stage.duration);
   double max_kinetic_energy = 0;
   stage_steps_ = 0;
   report.stop_reason = "duration reached";
@@ -400,6 +403,9 @@ StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback&
     t += dt;
     ++stage_steps_;
     bool output_now = t >= next_output - time_tolerance;
+    // SIGINT/SIGTERM (stop_request.hpp): write this step's state now; solve.cpp's output
+    // callback then ends the run with it as the last output.
+    if (stop_requested()) output_now = true;
     if (quasi_static && stage.kinetic_energy_ratio > 0) {
       const double e = kinetic_energy();
       max_kinetic_energy = std::max(max_kinetic_energy, e);

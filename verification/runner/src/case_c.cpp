@@ -76,6 +76,7 @@ Measured run_one(const CaseContext& context, const Run& run) {
   solver::SolveOptions options;
   options.threads = context.threads;
   options.overwrite = true;
+  options.keep_previous_output = false;  // the report is rebuilt each time: no output.previous
   solver::solve_case(case_folder, options);
   const post::PostResult r = post::postprocess(case_folder, folder / "post", /*overwrite=*/true);
   const post::PostSettings settings = post::read_post_settings(case_folder / "post.toml");

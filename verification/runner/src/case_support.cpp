@@ -39,6 +39,7 @@ std::filesystem::path run_scene(const CaseContext& context) {
   solver::SolveOptions options;
   options.threads = context.threads;
   options.overwrite = true;
+  options.keep_previous_output = false;  // the report is rebuilt each time: no output.previous
   solver::solve_case(case_folder, options);
   return case_folder;
 }

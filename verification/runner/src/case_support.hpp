@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lituya::verify {
@@ -28,6 +29,9 @@ struct CaseResult {
   // A documented failure (verification/<case>/known-failure.md): reported as FAIL with the
   // explanation, but it does not fail the run, so CI stays meaningful for the other cases.
   bool known_failure = false;
+  // The case folders the case wrote (relative to its work folder) and the hash of each one's
+  // case files (solver::case_files_hash), so a report can be matched to its inputs.
+  std::vector<std::pair<std::string, std::string>> case_hashes;
   bool passed() const;
 };
 

@@ -11,6 +11,8 @@
 #include "case_support.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/output_folder.hpp"
+#include "lituya/common/provenance.hpp"
+#include "lituya/solver/solve.hpp"
 
 namespace lituya::verify {
 
@@ -62,10 +64,33 @@ std::string json_escape(const std::string& s) {
   return out;
 }
 
+// Every case folder (one holding stages.toml) that the case wrote under its work folder, with
+// the hash of its case files, in path order.
+std::vector<std::pair<std::string, std::string>> hash_case_folders(
+    const std::filesystem::path& work) {
+  std::vector<std::pair<std::string, std::string>> out;
+  if (!std::filesystem::is_directory(work)) return out;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(work))
+    if (entry.is_regular_file() && entry.path().filename() == "stages.toml") {
+      const std::filesystem::path folder = entry.path().parent_path();
+      out.emplace_back(std::filesystem::relative(folder, work).generic_string(),
+                       solver::case_files_hash(folder));
+    }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Which program made the report and when: a report is compared with others long after.
+struct ReportProvenance {
+  std::string date = utc_now_iso8601();
+};
+
 void write_report(const std::filesystem::path& folder, const std::vector<CaseResult>& results,
-                  bool full) {
+                  bool full, const ReportProvenance& provenance) {
   std::ofstream md(folder / "report.md");
   md << "# Lituya verification report (" << (full ? "full" : "quick") << " variants)\n\n"
+     << "Lituya " << lituya_version() << ", commit `" << lituya_commit() << "`, run "
+     << provenance.date << ".\n\n"
      << "Each case states its reference, tolerance and why in `verification/<case>/README.md`."
      << "\nA check passes when |measured - reference| <= tolerance.\n\n";
   md << "| case | result | wall time (s) |\n|---|---|---|\n";
@@ -77,6 +102,8 @@ void write_report(const std::filesystem::path& folder, const std::vector<CaseRes
     if (r.known_failure && !r.passed())
       md << "Known failure, explained in `verification/" << r.name << "/known-failure.md`.\n\n";
     if (!r.error.empty()) md << "Could not run: `" << r.error << "`\n\n";
+    for (const auto& [case_folder, hash] : r.case_hashes)
+      md << "Case files of `" << r.name << "/" << case_folder << "`: `" << hash << "`\n\n";
     if (!r.checks.empty()) {
       md << "| quantity | measured | reference | tolerance | unit | result |\n"
             "|---|---|---|---|---|---|\n";
@@ -89,13 +116,19 @@ void write_report(const std::filesystem::path& folder, const std::vector<CaseRes
       md << "\n![" << plot.string() << "](" << plot.string() << ")\n";
   }
   std::ofstream json(folder / "summary.json");
-  json << "{\n  \"variant\": \"" << (full ? "full" : "quick") << "\",\n  \"cases\": [\n";
+  json << "{\n  \"variant\": \"" << (full ? "full" : "quick") << "\",\n  \"lituya_version\": \""
+       << json_escape(lituya_version()) << "\",\n  \"commit\": \"" << json_escape(lituya_commit())
+       << "\",\n  \"date\": \"" << provenance.date << "\",\n  \"cases\": [\n";
   for (std::size_t i = 0; i < results.size(); ++i) {
     const CaseResult& r = results[i];
     json << "    {\"name\": \"" << r.name << "\", \"passed\": " << (r.passed() ? "true" : "false")
          << ", \"known_failure\": " << (r.known_failure ? "true" : "false")
          << ", \"wall_time\": " << r.wall_time << ", \"error\": \"" << json_escape(r.error)
-         << "\", \"checks\": [";
+         << "\", \"case_hashes\": {";
+    for (std::size_t k = 0; k < r.case_hashes.size(); ++k)
+      json << (k ? ", " : "") << "\"" << json_escape(r.case_hashes[k].first) << "\": \""
+           << r.case_hashes[k].second << "\"";
+    json << "}, \"checks\": [";
     for (std::size_t k = 0; k < r.checks.size(); ++k) {
       const Check& c = r.checks[k];
       json << (k ? ", " : "") << "{\"quantity\": \"" << c.quantity << "\", \"unit\": \"" << c.unit
@@ -120,6 +153,7 @@ bool run_verification(const RunnerOptions& options) {
     if (!known) throw InputError(name, 0, "no verification case of this name");
   }
   prepare_output_folder(options.report_folder, options.overwrite);
+  const ReportProvenance provenance;
   std::vector<CaseResult> results;
   for (const CaseEntry& entry : all_cases()) {
     if (!options.only.empty() &&
@@ -140,6 +174,11 @@ bool run_verification(const RunnerOptions& options) {
     } catch (const std::exception& e) {
       result.error = e.what();
     }
+    try {
+      result.case_hashes = hash_case_folders(context.work);
+    } catch (const std::exception& e) {
+      result.case_hashes.emplace_back("?", std::string("not hashed: ") + e.what());
+    }
     result.wall_time =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << " " << status(result) << " (" << number(result.wall_time) << " s)\n";
@@ -150,7 +189,7 @@ bool run_verification(const RunnerOptions& options) {
     if (!result.error.empty()) std::cout << "    error: " << result.error << "\n";
     results.push_back(std::move(result));
   }
-  write_report(options.report_folder, results, options.full);
+  write_report(options.report_folder, results, options.full, provenance);
   int passed = 0, known = 0;
   for (const CaseResult& r : results) {
     passed += r.passed();

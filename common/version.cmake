@@ -1,4 +1,4 @@
-# Writes the version header of the `lituya` command (cmake -P script, run at every build so the
+# Writes the version header of the Lituya libraries (cmake -P script, run at every build so the
 # commit is that of the sources being compiled, not of the last configure).
 # In: VERSION, SOURCE_DIR, GIT_EXECUTABLE (may be empty or NOTFOUND), TEMPLATE, OUTPUT.
 cmake_minimum_required(VERSION 3.20)
@@ -44,5 +44,5 @@ if(GIT_EXECUTABLE AND EXISTS "${GIT_EXECUTABLE}")
 endif()
 
 # configure_file rewrites OUTPUT only when its text changes, so an unchanged commit does not
-# recompile main.cpp.
+# recompile provenance.cpp.
 configure_file("${TEMPLATE}" "${OUTPUT}" @ONLY)
