@@ -178,18 +178,25 @@ TEST(Simulation, GravityColumnReachesGeostaticStress) {
   EXPECT_LT(std::sqrt(error_h / count), 0.02);
 }
 
-// Cohesionless sand (c = 0) starting from zero stress: the state on which some MPM codes stop
-// at step 0. The column must collapse, every stress must stay admissible.
-TEST(Simulation, CohesionlessSandCollapsesFromZeroStress) {
+// A 0.2 m x 0.2 m sand column (friction angle phi) against a roller wall at x = 0, in a box
+// 1 m x 0.4 m of 0.02 m cells, free to collapse to the right onto a Coulomb bed (mu).
+BoxScene<2> sand_column(double phi, double mu) {
   BoxScene<2> scene;
   scene.domain_size = {1.0, 0.4};
   scene.cells = {50, 20};
   scene.block_max = {0.2, 0.2};
-  scene.material = sand(30);
+  scene.material = sand(phi);
   scene.gravity = {0.0, -9.81};
   scene.boundaries = {{"x-", box_condition(BoundaryType::kRoller)},
-                      {"y-", box_condition(BoundaryType::kContact, 0.5)},
-                      {"x+", box_condition(BoundaryType::kRoller)}};
+                      {"y-", box_condition(BoundaryType::kContact, mu)}};
+  return scene;
+}
+
+// Cohesionless sand (c = 0) starting from zero stress: the state on which some MPM codes stop
+// at step 0. The column must collapse, every stress must stay admissible.
+TEST(Simulation, CohesionlessSandCollapsesFromZeroStress) {
+  BoxScene<2> scene = sand_column(30, 0.5);
+  scene.boundaries.push_back({"x+", box_condition(BoundaryType::kRoller)});
   auto sim = make_box_simulation<2>(scene);
   Stage stage = dynamic_stage(0.3);
   stage.boundaries = {"x-", "y-", "x+"};
@@ -206,14 +213,7 @@ TEST(Simulation, CohesionlessSandCollapsesFromZeroStress) {
 
 TEST(Simulation, TwoThreadsGiveTheSameAnswerAsOne) {
   auto run = [](int threads) {
-    BoxScene<2> scene;
-    scene.domain_size = {1.0, 0.4};
-    scene.cells = {50, 20};
-    scene.block_max = {0.2, 0.2};
-    scene.material = sand(25);
-    scene.gravity = {0.0, -9.81};
-    scene.boundaries = {{"x-", box_condition(BoundaryType::kRoller)},
-                        {"y-", box_condition(BoundaryType::kContact, 0.4)}};
+    BoxScene<2> scene = sand_column(25, 0.4);
     auto sim = make_box_simulation<2>(scene);
     sim.set_threads(threads);
     Stage stage = dynamic_stage(0.05);
@@ -236,15 +236,8 @@ TEST(Simulation, TwoThreadsGiveTheSameAnswerAsOne) {
 // the kinetic energy (an OpenMP reduction could make it stop a step earlier or later).
 TEST(Simulation, TwoThreadRunsRepeatBitForBit) {
   auto run = [] {
-    BoxScene<2> scene;
-    scene.domain_size = {1.0, 0.4};
-    scene.cells = {50, 20};
-    scene.block_max = {0.2, 0.2};
-    scene.material = sand(25);
-    scene.gravity = {0.0, -9.81};
+    BoxScene<2> scene = sand_column(25, 0.4);
     scene.solver.volumetric_smoothing = true;
-    scene.boundaries = {{"x-", box_condition(BoundaryType::kRoller)},
-                        {"y-", box_condition(BoundaryType::kContact, 0.4)}};
     auto sim = make_box_simulation<2>(scene);
     sim.set_threads(2);
     sim.run_stage(settling_stage(0.05, 0.5, {"x-", "y-"}), nullptr);
