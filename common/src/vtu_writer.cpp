@@ -1,11 +1,9 @@
 #include "lituya/common/vtu_writer.hpp"
 
-#include <cstdio>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
-#include <stdexcept>
 
+#include "lituya/common/atomic_file.hpp"
 #include "lituya/common/xml_escape.hpp"
 
 namespace lituya {
@@ -17,22 +15,16 @@ struct Block {
   std::uint64_t bytes;
 };
 
-void write_atomically(const std::filesystem::path& file, const std::string& head,
-                      const std::vector<Block>& blocks, const std::string& tail) {
-  std::filesystem::path tmp = file;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+void write_vtu(const std::filesystem::path& file, const std::string& head,
+               const std::vector<Block>& blocks, const std::string& tail) {
+  write_file_atomically(file, [&](std::ostream& out) {
     out << head;
     for (const Block& b : blocks) {
       out.write(reinterpret_cast<const char*>(&b.bytes), sizeof(b.bytes));
       out.write(static_cast<const char*>(b.data), static_cast<std::streamsize>(b.bytes));
     }
     out << tail;
-    if (!out) throw std::runtime_error("error while writing " + tmp.string());
-  }
-  std::filesystem::rename(tmp, file);
+  });
 }
 }  // namespace
 
@@ -113,7 +105,7 @@ void VtuWriter::write(const std::filesystem::path& file) const {
   declare("UInt8", "types", 1, types_.data(), types_.size());
   head << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
        << "  <AppendedData encoding=\"raw\">\n   _";
-  write_atomically(file, head.str(), blocks, "\n  </AppendedData>\n</VTKFile>\n");
+  write_vtu(file, head.str(), blocks, "\n  </AppendedData>\n</VTKFile>\n");
 }
 
 void PvdWriter::add(double time, const std::string& dataset) {
@@ -125,7 +117,15 @@ void PvdWriter::add(double time, const std::string& dataset) {
   for (const auto& [t, f] : entries_)
     s << "    <DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << xml_escaped(f) << "\"/>\n";
   s << "  </Collection>\n</VTKFile>\n";
-  write_atomically(file_, s.str(), {}, "");
+  // A failed write leaves the previous collection, which lists every frame up to the last
+  // one written whole: the series stays playable. The entry is dropped so that the writer
+  // lists what the file lists.
+  try {
+    write_file_atomically(file_, s.str());
+  } catch (...) {
+    entries_.pop_back();
+    throw;
+  }
 }
 
 }  // namespace lituya

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "lituya/common/atomic_file.hpp"
 #include "lituya/common/input_error.hpp"
 
 namespace lituya::post {
@@ -126,11 +127,7 @@ bool plot_xy(const fs::path& png, const std::string& title, const std::string& x
          << gnuplot_quoted(s.label) << (i + 1 < series.size() ? ", \\\n" : "\n");
     }
   }
-  {
-    std::ofstream out(script);
-    if (!out) throw std::runtime_error("cannot write " + script.string());
-    out << gp.str();
-  }
+  write_file_atomically(script, gp.str());
 
   if (!gnuplot_available()) {
     static std::once_flag warned;

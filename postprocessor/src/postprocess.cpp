@@ -6,11 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <set>
+#include <sstream>
 
+#include "lituya/common/atomic_file.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/output_folder.hpp"
 #include "lituya/common/toml_reader.hpp"
@@ -31,12 +32,11 @@ std::string csv_number(double v) {
   return text;
 }
 
+// A table is gathered in memory and written whole by close(), through write_file_atomically:
+// a full disk leaves the earlier table (post --force) or none, never a torn one.
 class CsvFile {
  public:
-  CsvFile(const fs::path& file, const std::string& header) : file_(file), out_(file) {
-    if (!out_) throw std::runtime_error("cannot write " + file.string());
-    out_ << header << "\n";
-  }
+  CsvFile(const fs::path& file, const std::string& header) : file_(file) { out_ << header << "\n"; }
   template <typename... Values>
   void row(const Values&... values) {
     bool first = true;
@@ -47,14 +47,11 @@ class CsvFile {
     for (size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << csv_number(values[i]);
     out_ << "\n";
   }
-  void close() {
-    out_.close();
-    if (!out_) throw std::runtime_error("error while writing " + file_.string());
-  }
+  void close() { write_file_atomically(file_, out_.str()); }
 
  private:
   fs::path file_;
-  std::ofstream out_;
+  std::ostringstream out_;
 };
 
 // The dimension decides how a point's volume becomes its spacing; stages.toml states it, the
@@ -261,7 +258,7 @@ bool measure_slide(const PostSettings& settings, const SlideInput& input,
     const fs::path copy = out.file("reference.csv");
     std::error_code same;
     if (!fs::equivalent(settings.reference_file, copy, same))
-      fs::copy_file(settings.reference_file, copy, fs::copy_options::overwrite_existing);
+      copy_file_atomically(settings.reference_file, copy);
     reference_runout_csv = out.file("reference_runout.csv");
     reference_wall_csv = out.file("reference_wall_height.csv");
     CsvFile runout(reference_runout_csv, "time,front_travel");
@@ -383,7 +380,7 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
       const fs::path copy = out.file("gauge_reference.csv");
       std::error_code same;
       if (!fs::equivalent(settings.gauge_reference_file, copy, same))
-        fs::copy_file(settings.gauge_reference_file, copy, fs::copy_options::overwrite_existing);
+        copy_file_atomically(settings.gauge_reference_file, copy);
       for (size_t g = 0; g < gauges; ++g) {
         const GaugeReference& reference = *input.reference;
         bool any = false;

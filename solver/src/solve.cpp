@@ -8,6 +8,7 @@
 
 #include <toml++/toml.h>
 
+#include "lituya/common/atomic_file.hpp"
 #include "lituya/common/content_hash.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/output_folder.hpp"
@@ -45,8 +46,8 @@ struct Provenance {
 };
 
 // summary.toml, rewritten whole at each change of the run's state. It is written to a
-// temporary file and renamed over the old one, so a kill during the write leaves the previous
-// summary, never half of one.
+// temporary file and renamed over the old one, so a kill or a full disk during the write leaves
+// the previous summary, never half of one.
 class Summary {
  public:
   Summary(fs::path file, Provenance provenance, int threads)
@@ -78,14 +79,9 @@ class Summary {
     if (!reason.empty()) t.insert("reason", reason);
     // `error` as in format version 1, for readers that look for it.
     if (state == "failed") t.insert("error", reason);
-    const fs::path part = fs::path(file_).concat(".part");
-    {
-      std::ofstream out(part);
+    write_file_atomically(file_, [&](std::ostream& out) {
       out << "format = \"lituya-summary\"\nversion = 2\n" << t << "\n";
-      out.close();
-      if (!out) throw std::runtime_error(part.string() + ": cannot be written");
-    }
-    fs::rename(part, file_);
+    });
   }
 
  private:

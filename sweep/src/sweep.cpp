@@ -6,9 +6,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
+#include "lituya/common/atomic_file.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/output_folder.hpp"
 #include "lituya/post/plot.hpp"
@@ -92,11 +92,7 @@ std::vector<std::string> check_copies(const std::vector<std::string>& copies,
   const fs::path scratch =
       fs::temp_directory_path() / ("lituya_sweep_check_" + std::to_string(::getpid()) + ".toml");
   for (size_t i = 0; i < copies.size(); ++i) {
-    {
-      std::ofstream out(scratch);
-      out << copies[i];
-      if (!out) throw std::runtime_error("cannot write " + scratch.string());
-    }
+    write_file_atomically(scratch, copies[i]);
     try {
       pre::read_scene(scratch);
     } catch (const InputError& e) {
@@ -119,9 +115,7 @@ std::string quoted_list(const std::vector<std::string>& items) {
 }
 
 void write_table(const fs::path& file, const SweepResult& result) {
-  const fs::path partial = file.string() + ".part";
-  {
-    std::ofstream out(partial);
+  write_file_atomically(file, [&](std::ostream& out) {
     out << "run," << csv_text(result.parameter);
     for (const std::string& m : result.measures) out << "," << csv_text(m);
     out << ",wall_time_s,status,message\n";
@@ -132,10 +126,7 @@ void write_table(const fs::path& file, const SweepResult& result) {
       out << "," << csv_number(r.wall_time) << "," << status_text(r.status) << ","
           << csv_text(r.message) << "\n";
     }
-    out.close();
-    if (!out) throw std::runtime_error("cannot write " + partial.string());
-  }
-  fs::rename(partial, file);
+  });
 }
 
 // Each measure against the parameter, lines through points (against the run number when the
@@ -335,10 +326,8 @@ SweepResult run_sweep(const SweepDefinition& definition, const SweepOptions& opt
     return result;
   }
   prepare_output_folder(result.folder, options.overwrite);
-  {
-    std::ofstream record(result.folder / "sweep.toml");
-    record << sweep_file_text(definition, literals, result.measures);
-  }
+  write_file_atomically(result.folder / "sweep.toml",
+                        sweep_file_text(definition, literals, result.measures));
 
   SweepProgress progress(options.progress, options.progress_is_terminal, static_cast<int>(count));
   TickStream ticks([&progress] { progress.tick(); });
@@ -348,11 +337,7 @@ SweepResult run_sweep(const SweepDefinition& definition, const SweepOptions& opt
     RunRecord& run = result.runs[i];
     const std::string label = target.label + "=" + run.value;
     fs::create_directories(run.folder);
-    {
-      std::ofstream out(run.folder / "scene.toml");
-      out << copies[i];
-      if (!out) throw std::runtime_error("cannot write " + (run.folder / "scene.toml").string());
-    }
+    write_file_atomically(run.folder / "scene.toml", copies[i]);
     progress.start_run(label);
     const auto start = std::chrono::steady_clock::now();
     const bool valid = run.status == RunStatus::kOk;

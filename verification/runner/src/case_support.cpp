@@ -8,10 +8,10 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <stdexcept>
 
+#include "lituya/common/atomic_file.hpp"
 #include "lituya/post/postprocess.hpp"
 #include "lituya/pre/preprocess.hpp"
 #include "lituya/solver/solve.hpp"
@@ -85,12 +85,13 @@ std::vector<double> read_positions(const std::filesystem::path& vtu) {
 
 void write_csv(const std::filesystem::path& file, const std::string& header,
                const std::vector<std::vector<double>>& rows) {
-  std::ofstream out(file);
-  out << header << "\n" << std::setprecision(10);
-  for (const auto& row : rows) {
-    for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << row[i];
-    out << "\n";
-  }
+  write_file_atomically(file, [&](std::ostream& out) {
+    out << header << "\n" << std::setprecision(10);
+    for (const auto& row : rows) {
+      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << row[i];
+      out << "\n";
+    }
+  });
 }
 
 }  // namespace lituya::verify

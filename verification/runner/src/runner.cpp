@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 
 #include "case_support.hpp"
+#include "lituya/common/atomic_file.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/output_folder.hpp"
 #include "lituya/common/provenance.hpp"
@@ -87,58 +87,60 @@ struct ReportProvenance {
 
 void write_report(const std::filesystem::path& folder, const std::vector<CaseResult>& results,
                   bool full, const ReportProvenance& provenance) {
-  std::ofstream md(folder / "report.md");
-  md << "# Lituya verification report (" << (full ? "full" : "quick") << " variants)\n\n"
-     << "Lituya " << lituya_version() << ", commit `" << lituya_commit() << "`, run "
-     << provenance.date << ".\n\n"
-     << "Each case states its reference, tolerance and why in `verification/<case>/README.md`."
-     << "\nA check passes when |measured - reference| <= tolerance.\n\n";
-  md << "| case | result | wall time (s) |\n|---|---|---|\n";
-  for (const CaseResult& r : results)
-    md << "| " << r.title << " | " << status(r) << " | " << number(r.wall_time) << " |\n";
-  for (const CaseResult& r : results) {
-    md << "\n## " << r.title << "\n\nFolder `verification/" << r.name << "`, " << r.variant
-       << " variant: **" << status(r) << "**\n\n";
-    if (r.known_failure && !r.passed())
-      md << "Known failure, explained in `verification/" << r.name << "/known-failure.md`.\n\n";
-    if (!r.error.empty()) md << "Could not run: `" << r.error << "`\n\n";
-    for (const auto& [case_folder, hash] : r.case_hashes)
-      md << "Case files of `" << r.name << "/" << case_folder << "`: `" << hash << "`\n\n";
-    if (!r.checks.empty()) {
-      md << "| quantity | measured | reference | tolerance | unit | result |\n"
-            "|---|---|---|---|---|---|\n";
-      for (const Check& c : r.checks)
-        md << "| " << c.quantity << " | " << number(c.measured) << " | " << number(c.reference)
-           << " | " << number(c.tolerance) << " | " << c.unit << " | "
-           << (c.passed ? "pass" : "FAIL") << " |\n";
+  write_file_atomically(folder / "report.md", [&](std::ostream& md) {
+    md << "# Lituya verification report (" << (full ? "full" : "quick") << " variants)\n\n"
+       << "Lituya " << lituya_version() << ", commit `" << lituya_commit() << "`, run "
+       << provenance.date << ".\n\n"
+       << "Each case states its reference, tolerance and why in `verification/<case>/README.md`."
+       << "\nA check passes when |measured - reference| <= tolerance.\n\n";
+    md << "| case | result | wall time (s) |\n|---|---|---|\n";
+    for (const CaseResult& r : results)
+      md << "| " << r.title << " | " << status(r) << " | " << number(r.wall_time) << " |\n";
+    for (const CaseResult& r : results) {
+      md << "\n## " << r.title << "\n\nFolder `verification/" << r.name << "`, " << r.variant
+         << " variant: **" << status(r) << "**\n\n";
+      if (r.known_failure && !r.passed())
+        md << "Known failure, explained in `verification/" << r.name << "/known-failure.md`.\n\n";
+      if (!r.error.empty()) md << "Could not run: `" << r.error << "`\n\n";
+      for (const auto& [case_folder, hash] : r.case_hashes)
+        md << "Case files of `" << r.name << "/" << case_folder << "`: `" << hash << "`\n\n";
+      if (!r.checks.empty()) {
+        md << "| quantity | measured | reference | tolerance | unit | result |\n"
+              "|---|---|---|---|---|---|\n";
+        for (const Check& c : r.checks)
+          md << "| " << c.quantity << " | " << number(c.measured) << " | " << number(c.reference)
+             << " | " << number(c.tolerance) << " | " << c.unit << " | "
+             << (c.passed ? "pass" : "FAIL") << " |\n";
+      }
+      for (const auto& plot : r.plots)
+        md << "\n![" << plot.string() << "](" << plot.string() << ")\n";
     }
-    for (const auto& plot : r.plots)
-      md << "\n![" << plot.string() << "](" << plot.string() << ")\n";
-  }
-  std::ofstream json(folder / "summary.json");
-  json << "{\n  \"variant\": \"" << (full ? "full" : "quick") << "\",\n  \"lituya_version\": \""
-       << json_escape(lituya_version()) << "\",\n  \"commit\": \"" << json_escape(lituya_commit())
-       << "\",\n  \"date\": \"" << provenance.date << "\",\n  \"cases\": [\n";
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const CaseResult& r = results[i];
-    json << "    {\"name\": \"" << r.name << "\", \"passed\": " << (r.passed() ? "true" : "false")
-         << ", \"known_failure\": " << (r.known_failure ? "true" : "false")
-         << ", \"wall_time\": " << r.wall_time << ", \"error\": \"" << json_escape(r.error)
-         << "\", \"case_hashes\": {";
-    for (std::size_t k = 0; k < r.case_hashes.size(); ++k)
-      json << (k ? ", " : "") << "\"" << json_escape(r.case_hashes[k].first) << "\": \""
-           << r.case_hashes[k].second << "\"";
-    json << "}, \"checks\": [";
-    for (std::size_t k = 0; k < r.checks.size(); ++k) {
-      const Check& c = r.checks[k];
-      json << (k ? ", " : "") << "{\"quantity\": \"" << c.quantity << "\", \"unit\": \"" << c.unit
-           << "\", \"measured\": " << (std::isfinite(c.measured) ? number(c.measured) : "null")
-           << ", \"reference\": " << c.reference << ", \"tolerance\": " << c.tolerance
-           << ", \"passed\": " << (c.passed ? "true" : "false") << "}";
+  });
+  write_file_atomically(folder / "summary.json", [&](std::ostream& json) {
+    json << "{\n  \"variant\": \"" << (full ? "full" : "quick") << "\",\n  \"lituya_version\": \""
+         << json_escape(lituya_version()) << "\",\n  \"commit\": \"" << json_escape(lituya_commit())
+         << "\",\n  \"date\": \"" << provenance.date << "\",\n  \"cases\": [\n";
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      const CaseResult& r = results[i];
+      json << "    {\"name\": \"" << r.name << "\", \"passed\": " << (r.passed() ? "true" : "false")
+           << ", \"known_failure\": " << (r.known_failure ? "true" : "false")
+           << ", \"wall_time\": " << r.wall_time << ", \"error\": \"" << json_escape(r.error)
+           << "\", \"case_hashes\": {";
+      for (std::size_t k = 0; k < r.case_hashes.size(); ++k)
+        json << (k ? ", " : "") << "\"" << json_escape(r.case_hashes[k].first) << "\": \""
+             << r.case_hashes[k].second << "\"";
+      json << "}, \"checks\": [";
+      for (std::size_t k = 0; k < r.checks.size(); ++k) {
+        const Check& c = r.checks[k];
+        json << (k ? ", " : "") << "{\"quantity\": \"" << c.quantity << "\", \"unit\": \"" << c.unit
+             << "\", \"measured\": " << (std::isfinite(c.measured) ? number(c.measured) : "null")
+             << ", \"reference\": " << c.reference << ", \"tolerance\": " << c.tolerance
+             << ", \"passed\": " << (c.passed ? "true" : "false") << "}";
+      }
+      json << "]}" << (i + 1 < results.size() ? "," : "") << "\n";
     }
-    json << "]}" << (i + 1 < results.size() ? "," : "") << "\n";
-  }
-  json << "  ]\n}\n";
+    json << "  ]\n}\n";
+  });
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
 #pragma once
 // Minimal writer of VTK XML unstructured grids (.vtu) with appended raw binary data, and of
 // .pvd collections, so that ParaView opens every geometry and output file Lituya writes.
-// Files are written to a temporary name and renamed, so a crash never leaves a torn file and
-// the last good output of a run stays readable.
+// Files are written to a temporary name and renamed (write_file_atomically), so a crash or a
+// full disk never leaves a torn file and the last good output of a run stays readable; a failed
+// write throws WriteError naming the file and the system's reason.
 #include <cstdint>
 #include <filesystem>
 #include <span>
