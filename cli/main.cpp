@@ -40,11 +40,13 @@ const char* kUsage =
     R"(Lituya: MPM for granular landslides (dry and saturated flows, free water, surge waves)
 
 usage:
-  lituya pre    SCENE.toml [-o CASE] [--force]     mesh the scene, seed points, write the case
+  lituya pre    SCENE.toml [-o CASE] [--force] [--allow-large-mesh]
+                                                   mesh the scene, seed points, write the case
   lituya solve  CASE [--threads N] [--force]       run the case's stages, write CASE/output
   lituya post   CASE [--force] [--allow-incomplete]
                                                    runout, profiles, wall height -> CASE/post
-  lituya run    SCENE.toml [-o CASE] [--threads N] [--force]   pre + solve + post
+  lituya run    SCENE.toml [-o CASE] [--threads N] [--force] [--allow-large-mesh]
+                                                   pre + solve + post
   lituya verify [--full] [-o REPORT] [--threads N] [--case NAME] [--force]
                                                    run the verification cases, write a report
   lituya sweep  SCENE.toml --parameter KEY --values V1,V2,... [--measure M,...] [-o DIR]
@@ -133,6 +135,7 @@ struct Options {
   std::vector<std::string> measures;  // sweep
   bool dry_run = false;               // sweep
   bool allow_incomplete = false;      // post
+  bool allow_large_mesh = false;      // pre, run
 };
 
 // One command: its synopsis, what it does, and the only options it accepts.
@@ -168,6 +171,12 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
   auto force = [&](po::options_description& d, const char* what) {
     d.add_options()("force,f", po::bool_switch(&o.force), what);
   };
+  // Without it, `pre` estimates the mesh before meshing and refuses one that needs more memory
+  // than the machine has (a cell size typed far too small would otherwise exhaust it).
+  auto allow_large_mesh = [&](po::options_description& d) {
+    d.add_options()("allow-large-mesh", po::bool_switch(&o.allow_large_mesh),
+                    "mesh even when the estimated memory exceeds what the machine has");
+  };
   auto make = [](const char* name, const char* synopsis, const std::string& summary,
                  const char* input) {
     return Command{name, synopsis, summary, input,
@@ -176,12 +185,13 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
 
   std::vector<Command> table;
   {
-    Command c = make("pre", "lituya pre SCENE.toml [-o CASE] [--force]",
+    Command c = make("pre", "lituya pre SCENE.toml [-o CASE] [--force] [--allow-large-mesh]",
                      "Mesh the scene with gmsh, seed the material points and write the case "
                      "folder.",
                      "a scene file");
     output(c.options, "the case folder (default: case/ next to the scene file)");
     force(c.options, "write into a case folder that already holds files");
+    allow_large_mesh(c.options);
     common(c.options);
     table.push_back(std::move(c));
   }
@@ -208,11 +218,14 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
     table.push_back(std::move(c));
   }
   {
-    Command c = make("run", "lituya run SCENE.toml [-o CASE] [--threads N] [--force]",
+    Command c = make("run",
+                     "lituya run SCENE.toml [-o CASE] [--threads N] [--force] "
+                     "[--allow-large-mesh]",
                      "pre + solve + post in one.", "a scene file");
     output(c.options, "the case folder (default: case/ next to the scene file)");
     threads_option(c.options);
     force(c.options, "write into folders that already hold files");
+    allow_large_mesh(c.options);
     common(c.options);
     table.push_back(std::move(c));
   }
@@ -532,7 +545,7 @@ int run_sweep(const Options& o, std::ostream& errors) {
 
 void run_pre(const fs::path& scene, const fs::path& case_folder, const Options& o) {
   StepTimer timer(o, "pre");
-  auto s = lituya::pre::preprocess(scene, case_folder, o.force);
+  auto s = lituya::pre::preprocess(scene, case_folder, o.force, o.allow_large_mesh);
   std::cout << "pre: " << s.dimension << "D case with " << s.nodes << " nodes, " << s.cells
             << " cells, " << s.points << " material points in " << case_folder.string() << "\n";
 }

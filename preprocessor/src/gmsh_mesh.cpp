@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 #include <utility>
@@ -188,6 +190,77 @@ void refuse_crashing_algorithms(const std::filesystem::path& geometry, int dimen
                        "Mesh.Algorithm3D = 9 (R-tree) is not supported" + advice +
                            "Mesh.Algorithm3D = 1 (Delaunay, gmsh's default)");
   }
+}
+
+// The total area (2D) or volume (3D) of the open model's entities of dimension `dim`, before
+// it is meshed. The OpenCASCADE kernel knows the exact mass of its shapes; gmsh's built-in
+// kernel has no such query, so its entities count with their bounding boxes, which can only
+// overestimate (exact for the rectangles and boxes most flume scenes are made of).
+double model_measure(int dim) {
+  std::set<int> occ_tags;
+  try {
+    gmsh::vectorpair occ;
+    gmsh::model::occ::getEntities(occ, dim);
+    for (const auto& dim_tag : occ) occ_tags.insert(dim_tag.second);
+  } catch (...) {
+    // A gmsh built without OpenCASCADE: every entity is measured by its bounding box.
+  }
+  gmsh::vectorpair entities;
+  gmsh::model::getEntities(entities, dim);
+  double sum = 0;
+  for (const auto& [entity_dim, tag] : entities) {
+    if (occ_tags.count(tag) != 0) {
+      double mass = 0;
+      gmsh::model::occ::getMass(entity_dim, tag, mass);
+      sum += std::abs(mass);
+      continue;
+    }
+    double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+    gmsh::model::getBoundingBox(entity_dim, tag, x0, y0, z0, x1, y1, z1);
+    sum += (x1 - x0) * (y1 - y0) * (dim == 3 ? z1 - z0 : 1.0);
+  }
+  return sum;
+}
+
+MeshSizeEstimate estimate_open_model(const MeshingOptions& options) {
+  return estimate_mesh_size(model_measure(options.dimension), options.dimension, options.cell_size,
+                            options.size_check.points_per_cell);
+}
+
+// "63208" for a count a reader can take in at a glance, "4.6e+12" beyond.
+std::string about(double count) {
+  std::ostringstream s;
+  if (count < 1e7)
+    s << std::llround(count);
+  else
+    s << std::setprecision(2) << count;
+  return s.str();
+}
+
+std::string gigabytes(double bytes) {
+  std::ostringstream s;
+  s << std::setprecision(bytes < 1e9 ? 2 : 3) << bytes / 1e9;
+  return s.str();
+}
+
+// Refuses, before gmsh allocates anything, a cell size that would need more memory than this
+// machine has: gmsh would otherwise grow for minutes and end in bad_alloc or the kernel's
+// out-of-memory killer, and take the machine's memory from everything else meanwhile.
+void refuse_too_large_mesh(const std::filesystem::path& geometry, const MeshingOptions& options) {
+  const MeshSizeCheck& check = options.size_check;
+  if (!check.enabled) return;
+  const MeshSizeEstimate e = estimate_open_model(options);
+  const double available =
+      check.available_bytes > 0 ? check.available_bytes : available_memory_bytes();
+  if (e.bytes <= available) return;
+  std::ostringstream m;
+  m << "cell_size = " << options.cell_size << " would give about " << about(e.cells)
+    << " cells and " << about(e.points) << " points, needing about " << gigabytes(e.bytes)
+    << " GB; this machine has " << gigabytes(available)
+    << " GB available (use --allow-large-mesh to try anyway)";
+  const bool in_scene = !check.scene_file.empty();
+  throw InputError(in_scene ? check.scene_file : geometry.string(),
+                   in_scene ? check.cell_size_line : 0, m.str());
 }
 
 std::string element_name(int type) {
@@ -399,9 +472,9 @@ Mesh read_current_model(const std::filesystem::path& geometry, const MeshingOpti
   return mesh;
 }
 
-}  // namespace
-
-Mesh read_gmsh_mesh(const std::filesystem::path& geometry, const MeshingOptions& options) {
+// The geometry's extension (lower case), after checking the file and the options.
+std::string checked_extension(const std::filesystem::path& geometry,
+                              const MeshingOptions& options) {
   if (!std::filesystem::is_regular_file(geometry))
     throw InputError(geometry.string(), 0, "geometry file not found");
   std::string extension = geometry.extension().string();
@@ -413,20 +486,14 @@ Mesh read_gmsh_mesh(const std::filesystem::path& geometry, const MeshingOptions&
         "expected a gmsh .geo script or .msh mesh, found extension '" + extension + "'");
   if (options.dimension != 2 && options.dimension != 3)
     throw InputError(geometry.string(), 0, "the mesh dimension must be 2 or 3");
+  return extension;
+}
 
-  GmshSession session(options.verbose);
+// Turns whatever gmsh throws into an InputError naming the geometry.
+template <class GmshWork>
+auto with_gmsh_errors(const std::filesystem::path& geometry, GmshWork work) {
   try {
-    // The scene's cell size caps gmsh's element size; sizes a .geo gives its points may still
-    // refine locally. Set before opening (a .geo may mesh while it is read) and after (a .geo
-    // may set its own value).
-    gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
-    call_without_throwing(geometry, [&] { gmsh::open(geometry.string()); });
-    if (extension == ".geo") {
-      gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
-      refuse_crashing_algorithms(geometry, options.dimension);
-      call_without_throwing(geometry, [&] { gmsh::model::mesh::generate(options.dimension); });
-    }
-    return read_current_model(geometry, options);
+    return work();
   } catch (const InputError&) {
     throw;
   } catch (const std::string& message) {  // how gmsh 4.8 reports errors
@@ -438,6 +505,37 @@ Mesh read_gmsh_mesh(const std::filesystem::path& geometry, const MeshingOptions&
     gmsh::logger::getLastError(message);
     throw gmsh_error(geometry, message.empty() ? "unknown gmsh error" : message);
   }
+}
+
+}  // namespace
+
+MeshSizeEstimate estimate_gmsh_mesh(const std::filesystem::path& geometry,
+                                    const MeshingOptions& options) {
+  checked_extension(geometry, options);
+  GmshSession session(options.verbose);
+  return with_gmsh_errors(geometry, [&] {
+    call_without_throwing(geometry, [&] { gmsh::open(geometry.string()); });
+    return estimate_open_model(options);
+  });
+}
+
+Mesh read_gmsh_mesh(const std::filesystem::path& geometry, const MeshingOptions& options) {
+  const std::string extension = checked_extension(geometry, options);
+  GmshSession session(options.verbose);
+  return with_gmsh_errors(geometry, [&] {
+    // The scene's cell size caps gmsh's element size; sizes a .geo gives its points may still
+    // refine locally. Set before opening (a .geo may mesh while it is read) and after (a .geo
+    // may set its own value).
+    gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
+    call_without_throwing(geometry, [&] { gmsh::open(geometry.string()); });
+    if (extension == ".geo") {
+      gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
+      refuse_crashing_algorithms(geometry, options.dimension);
+      refuse_too_large_mesh(geometry, options);
+      call_without_throwing(geometry, [&] { gmsh::model::mesh::generate(options.dimension); });
+    }
+    return read_current_model(geometry, options);
+  });
 }
 
 }  // namespace lituya::pre

@@ -24,10 +24,12 @@ void refuse_occupied_folder(const fs::path& case_folder, bool overwrite) {
 }  // namespace
 
 PreprocessSummary preprocess(const fs::path& scene_file, const fs::path& case_folder,
-                             bool overwrite) {
+                             bool overwrite, bool allow_large_mesh) {
   const Scene scene = read_scene(scene_file);
   refuse_occupied_folder(case_folder, overwrite);
-  const Mesh mesh = read_gmsh_mesh(scene.geometry, {scene.dimension, scene.cell_size, false});
+  MeshingOptions meshing{scene.dimension, scene.cell_size, false};
+  meshing.size_check = {!allow_large_mesh, scene.points_per_cell, scene.file, scene.cell_size_line};
+  const Mesh mesh = read_gmsh_mesh(scene.geometry, meshing);
   check_scene_groups(scene, mesh);
 
   const InitialState state = make_initial_state(scene, mesh);

@@ -50,6 +50,7 @@ void read_mesh_table(const TomlTable& root, const fs::path& scene_file, Scene& s
     mesh.fail("'mesh.dimension' must be 2 (plane strain) or 3", "dimension");
   scene.dimension = static_cast<int>(dimension);
   scene.cell_size = mesh.number("cell_size");
+  scene.cell_size_line = mesh.line_of("cell_size");
   if (!(scene.cell_size > 0 && std::isfinite(scene.cell_size)))
     mesh.fail("'mesh.cell_size' must be a positive length in m", "cell_size");
   const long long points_per_cell = mesh.integer("points_per_cell");

@@ -17,8 +17,10 @@ struct PreprocessSummary {
 // stages.toml, post.toml if the scene has [post]).
 // Throws lituya::InputError (file + line + what was expected) for any bad input; never writes
 // into a non-empty case folder unless overwrite is true (use prepare_output_folder), and
-// validates everything BEFORE creating the folder.
+// validates everything BEFORE creating the folder. Refuses a cell size whose mesh would need
+// more memory than the machine has (estimated before meshing) unless allow_large_mesh.
 PreprocessSummary preprocess(const std::filesystem::path& scene_file,
-                             const std::filesystem::path& case_folder, bool overwrite);
+                             const std::filesystem::path& case_folder, bool overwrite,
+                             bool allow_large_mesh = false);
 
 }  // namespace lituya::pre

@@ -59,6 +59,7 @@ struct Scene {
   std::filesystem::path geometry;  // resolved against the scene's folder
   int dimension = 2;
   double cell_size = 0;
+  int cell_size_line = 0;  // scene.toml line of `cell_size`, for the memory check's refusal
   int points_per_cell = 0;
   std::vector<double> gravity;  // `dimension` components
   std::vector<solver::Material> materials;
