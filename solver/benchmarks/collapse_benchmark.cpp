@@ -101,9 +101,28 @@ void run(int segments, int steps, int threads, double cell, bool with_water) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const char* usage =
+      "usage: lituya_benchmark [--dim 2|3] [--segments 5] [--steps 50] [--threads 1]\n"
+      "                        [--cell 0.005] [--water 0|1]\n";
   int dim = 2, segments = 5, steps = 50, threads = 1, water = 0;
   double cell = -1;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  for (int i = 1; i < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
+      std::fputs(usage, stdout);
+      return 0;
+    }
+    // Every option takes a value: a lone or unknown flag is a usage error, not a run.
+    bool known = false;
+    for (const char* name : {"--dim", "--segments", "--steps", "--threads", "--water", "--cell"})
+      known = known || !std::strcmp(argv[i], name);
+    if (!known) {
+      std::fprintf(stderr, "unknown option %s\n%s", argv[i], usage);
+      return 1;
+    }
+    if (i + 1 >= argc) {
+      std::fprintf(stderr, "option %s needs a value\n%s", argv[i], usage);
+      return 1;
+    }
     if (!std::strcmp(argv[i], "--dim"))
       dim = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--segments"))
@@ -114,12 +133,8 @@ int main(int argc, char** argv) {
       threads = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--water"))
       water = std::atoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--cell"))
+    else
       cell = std::atof(argv[i + 1]);
-    else {
-      std::fprintf(stderr, "unknown option %s\n", argv[i]);
-      return 1;
-    }
   }
   if (dim == 2)
     run<2>(segments, steps, threads, cell > 0 ? cell : 0.005, water != 0);
