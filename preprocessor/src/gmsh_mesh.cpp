@@ -1,9 +1,13 @@
 #include "lituya/pre/gmsh_mesh.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <iterator>
+#include <limits>
 #include <map>
 #include <regex>
 #include <set>
@@ -472,10 +476,148 @@ Mesh read_current_model(const std::filesystem::path& geometry, const MeshingOpti
   return mesh;
 }
 
+// gmsh 4.8's reader of ASCII .msh 4.1 files trusts the counts and tags of the $Nodes and
+// $Elements sections: a count that does not match the blocks that follow, or a tag outside
+// the declared range, crashes the process (segmentation fault or abort) inside gmsh::open,
+// where no error handling can catch it. These sections are read once here first, token by
+// token as gmsh reads them, and an inconsistency becomes an input error at its line. Other
+// versions and binary files are left to gmsh.
+class MshTokens {
+ public:
+  explicit MshTokens(const std::filesystem::path& file) : file_(file.string()) {
+    std::ifstream in(file);
+    int number = 0;
+    for (std::string line; std::getline(in, line);) {
+      ++number;
+      std::istringstream words(line);
+      for (std::string word; words >> word;) tokens_.emplace_back(std::move(word), number);
+    }
+  }
+  // Moves past the first token equal to `word`; false when there is none.
+  bool find(const std::string& word) {
+    for (next_ = 0; next_ < tokens_.size(); ++next_)
+      if (tokens_[next_].first == word) {
+        ++next_;
+        return true;
+      }
+    return false;
+  }
+  const std::string& word(const std::string& what) {
+    if (next_ >= tokens_.size()) fail(what + " missing: the file ends early");
+    return tokens_[next_++].first;
+  }
+  long long integer(const std::string& what, long long low, long long high) {
+    const std::string& text = word(what);
+    char* end = nullptr;
+    errno = 0;
+    const long long value = std::strtoll(text.c_str(), &end, 10);
+    if (end == text.c_str() || *end != '\0' || errno != 0)
+      fail("expected an integer (" + what + "), found '" + text + "'");
+    if (value < low || value > high)
+      fail(what + " = " + text + " is outside [" + std::to_string(low) + ", " +
+           std::to_string(high) + "]");
+    return value;
+  }
+  void real(const std::string& what) {
+    const std::string& text = word(what);
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0' || !std::isfinite(value))
+      fail("expected a finite number (" + what + "), found '" + text + "'");
+  }
+  void expect(const std::string& keyword) {
+    const std::string& text = word(keyword);
+    if (text != keyword) fail("expected " + keyword + ", found '" + text + "' (a count is wrong?)");
+  }
+  // The line of the last token read (0 before the first).
+  int line() const { return next_ == 0 ? 0 : tokens_[std::min(next_, tokens_.size()) - 1].second; }
+  // at_line: the line to report, 0 for the line of the last token read.
+  [[noreturn]] void fail(const std::string& message, int at_line = 0) const {
+    throw InputError(file_, at_line > 0 ? at_line : line(), "invalid .msh file: " + message);
+  }
+
+ private:
+  std::string file_;
+  std::vector<std::pair<std::string, int>> tokens_;
+  std::size_t next_ = 0;
+};
+
+// Nodes per element of gmsh's element types (gmsh's MSH format documentation); 0: unknown.
+int msh_element_nodes(long long type) {
+  static const int nodes[] = {0, 2, 3, 4, 4, 8, 6, 5, 3, 6, 9, 10, 27, 18, 14, 1, 8, 20, 15, 13};
+  return type >= 0 && type < static_cast<long long>(std::size(nodes)) ? nodes[type] : 0;
+}
+
+void check_msh_sections(const std::filesystem::path& mesh) {
+  MshTokens msh(mesh);
+  if (!msh.find("$MeshFormat")) return;  // gmsh reports it
+  if (msh.word("version") != "4.1") return;
+  if (msh.integer("file type", 0, 1) != 0) return;  // binary
+  constexpr long long big = std::numeric_limits<long long>::max();
+  long long node_min = 0, node_max = big;
+  if (msh.find("$Nodes")) {
+    const long long blocks = msh.integer("number of node blocks", 0, big);
+    const long long total = msh.integer("number of nodes", 0, big);
+    const int header = msh.line();
+    node_min = msh.integer("smallest node tag", 0, big);
+    node_max = msh.integer("largest node tag", node_min, big);
+    long long sum = 0;
+    for (long long b = 0; b < blocks; ++b) {
+      const long long dim = msh.integer("entity dimension", 0, 3);
+      msh.integer("entity tag", std::numeric_limits<long long>::min(), big);
+      const long long parametric = msh.integer("parametric flag", 0, 1);
+      const long long count = msh.integer("nodes in the block", 0, big);
+      if (count > total - sum)
+        msh.fail(
+            "the blocks hold more nodes than the " + std::to_string(total) + " the header says",
+            header);
+      sum += count;
+      for (long long k = 0; k < count; ++k) msh.integer("node tag", node_min, node_max);
+      for (long long k = 0; k < count * (3 + parametric * dim); ++k) msh.real("coordinate");
+    }
+    if (sum != total)
+      msh.fail("the node blocks hold " + std::to_string(sum) + " nodes, the header says " +
+                   std::to_string(total),
+               header);
+    msh.expect("$EndNodes");
+  }
+  if (msh.find("$Elements")) {
+    const long long blocks = msh.integer("number of element blocks", 0, big);
+    const long long total = msh.integer("number of elements", 0, big);
+    const int header = msh.line();
+    const long long min = msh.integer("smallest element tag", 0, big);
+    const long long max = msh.integer("largest element tag", min, big);
+    long long sum = 0;
+    for (long long b = 0; b < blocks; ++b) {
+      msh.integer("entity dimension", 0, 3);
+      msh.integer("entity tag", std::numeric_limits<long long>::min(), big);
+      const long long type = msh.integer("element type", 1, big);
+      const int nodes = msh_element_nodes(type);
+      if (nodes == 0) msh.fail("unknown element type " + std::to_string(type));
+      const long long count = msh.integer("elements in the block", 0, big);
+      if (count > total - sum)
+        msh.fail(
+            "the blocks hold more elements than the " + std::to_string(total) + " the header says",
+            header);
+      sum += count;
+      for (long long k = 0; k < count; ++k) {
+        msh.integer("element tag", min, max);
+        for (int j = 0; j < nodes; ++j) msh.integer("node tag", node_min, node_max);
+      }
+    }
+    if (sum != total)
+      msh.fail("the element blocks hold " + std::to_string(sum) + " elements, the header says " +
+                   std::to_string(total),
+               header);
+    msh.expect("$EndElements");
+  }
+}
+
 // The geometry's extension (lower case), after checking the file and the options.
 std::string checked_extension(const std::filesystem::path& geometry,
                               const MeshingOptions& options) {
-  if (!std::filesystem::is_regular_file(geometry))
+  std::error_code error;  // e.g. a symbolic link loop: reported, not thrown
+  if (!std::filesystem::is_regular_file(geometry, error))
     throw InputError(geometry.string(), 0, "geometry file not found");
   std::string extension = geometry.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
@@ -486,6 +628,16 @@ std::string checked_extension(const std::filesystem::path& geometry,
         "expected a gmsh .geo script or .msh mesh, found extension '" + extension + "'");
   if (options.dimension != 2 && options.dimension != 3)
     throw InputError(geometry.string(), 0, "the mesh dimension must be 2 or 3");
+  // gmsh's Exit statement ends the whole process (exit code 0) while the .geo is read, so
+  // `lituya pre` would stop silently without writing the case: refused before gmsh reads it.
+  if (extension == ".msh") check_msh_sections(geometry);
+  if (extension == ".geo") {
+    const int exit_line = line_matching(geometry, std::regex(R"((^|[;)}])\s*Exit\s*;)"));
+    if (exit_line > 0)
+      throw InputError(geometry.string(), exit_line,
+                       "the Exit statement is not supported: it ends gmsh and Lituya with it; "
+                       "remove it");
+  }
   return extension;
 }
 

@@ -16,8 +16,11 @@ namespace {
 // the message prepare_output_folder gives; the folder itself is created only once everything
 // has been validated.
 void refuse_occupied_folder(const fs::path& case_folder, bool overwrite) {
-  if (fs::exists(case_folder) &&
-      (!fs::is_directory(case_folder) || (!overwrite && !fs::is_empty(case_folder))))
+  std::error_code error;  // e.g. a symbolic link loop: prepare_output_folder reports it
+  const fs::file_status status = fs::status(case_folder, error);
+  if ((error && status.type() != fs::file_type::not_found) ||
+      (fs::exists(status) &&
+       (!fs::is_directory(status) || (!overwrite && !fs::is_empty(case_folder)))))
     prepare_output_folder(case_folder, overwrite);  // throws
 }
 

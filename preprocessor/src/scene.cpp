@@ -40,7 +40,8 @@ void read_mesh_table(const TomlTable& root, const fs::path& scene_file, Scene& s
         "geometry");
   // Relative to the scene file, so a scene folder can be moved or run from anywhere.
   scene.geometry = scene_file.parent_path() / geometry;
-  if (!fs::is_regular_file(scene.geometry))
+  std::error_code error;  // e.g. a symbolic link loop: reported, not thrown
+  if (!fs::is_regular_file(scene.geometry, error))
     mesh.fail("geometry file \"" + geometry + "\" not found (looked for " +
                   scene.geometry.string() + "; the path is relative to the scene file)",
               "geometry");
@@ -276,8 +277,10 @@ void add_post_data_file(const TomlTable& post, const fs::path& scene_file, const
   const fs::path file = scene_file.parent_path() / name;
   const std::string looked_for =
       " (looked for " + file.string() + "; the path is relative to the scene file)";
-  if (!fs::exists(file)) post.fail(where + ": file not found" + looked_for, key);
-  if (!fs::is_regular_file(file)) post.fail(where + " is not a regular file" + looked_for, key);
+  std::error_code error;  // e.g. a symbolic link loop: reported, not thrown
+  if (!fs::exists(file, error)) post.fail(where + ": file not found" + looked_for, key);
+  if (!fs::is_regular_file(file, error))
+    post.fail(where + " is not a regular file" + looked_for, key);
   if (!std::ifstream(file)) post.fail(where + ": the file cannot be read" + looked_for, key);
 
   // The copy keeps the file's name, unless that name is taken by a case file or by another

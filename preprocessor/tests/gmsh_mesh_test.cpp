@@ -1,6 +1,8 @@
 #include "lituya/pre/gmsh_mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -220,6 +222,57 @@ TEST(GmshMesh, ReadingAfterAnErrorWorks) {
   EXPECT_THROW(read_gmsh_mesh(test_data("inverted.msh"), {2, 0.5, false}), InputError);
   const Mesh mesh = read_gmsh_mesh(test_data("two_squares.geo"), {2, 0.5, false});
   EXPECT_NEAR(total_measure(mesh, all_cells(mesh)), 2.0, 1e-12);
+}
+
+// gmsh's Exit statement ends the process while the .geo is read: refused before gmsh reads it.
+TEST(GmshMesh, ExitStatementIsRefused) {
+  testing::TempFolder folder;
+  testing::write_text(folder / "exit.geo",
+                      testing::read_bytes(test_data("open_loop.geo")) + "\n// the end\nExit;\n");
+  const std::string geo = testing::read_bytes(folder / "exit.geo");
+  const int line = static_cast<int>(std::count(geo.begin(), geo.end(), '\n'));
+  expect_input_error(
+      [&] {
+        read_gmsh_mesh(folder / "exit.geo", {2, 0.5, false});
+      },
+      "exit.geo", line, {"Exit statement is not supported"});
+}
+
+// A .msh 4.1 whose counts do not match its blocks crashes gmsh 4.8's reader: checked first.
+TEST(GmshMesh, MshWithWrongCountsIsRefused) {
+  const std::string head =
+      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+      "$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n$EndNodes\n";
+  testing::TempFolder folder;
+  testing::write_text(folder / "count.msh",
+                      head + "$Elements\n1 2 1 2\n2 1 2 1\n1 1 2 3\n$EndElements\n");
+  expect_input_error(
+      [&] {
+        read_gmsh_mesh(folder / "count.msh", {2, 0.5, false});
+      },
+      "count.msh", 15, {"the element blocks hold 1 elements, the header says 2"});
+  testing::write_text(folder / "tag.msh",
+                      head + "$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 9\n$EndElements\n");
+  expect_input_error(
+      [&] {
+        read_gmsh_mesh(folder / "tag.msh", {2, 0.5, false});
+      },
+      "tag.msh", 17, {"node tag = 9 is outside [1, 3]"});
+  // The same mesh with consistent counts is read.
+  testing::write_text(folder / "good.msh",
+                      head + "$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 3\n$EndElements\n");
+  EXPECT_EQ(read_gmsh_mesh(folder / "good.msh", {2, 0.5, false}).cell_count(), 1u);
+}
+
+// A geometry that is a symbolic link to itself is not found (not a filesystem exception).
+TEST(GmshMesh, SymbolicLinkLoopIsNotFound) {
+  testing::TempFolder folder;
+  std::filesystem::create_symlink("loop.geo", folder / "loop.geo");
+  expect_input_error(
+      [&] {
+        read_gmsh_mesh(folder / "loop.geo", {2, 0.5, false});
+      },
+      "loop.geo", 0, {"geometry file not found"});
 }
 
 }  // namespace
