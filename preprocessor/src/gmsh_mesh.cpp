@@ -170,13 +170,31 @@ void refuse_crashing_algorithms(const std::filesystem::path& geometry, int dimen
   std::string advice = ": it is meant for quadrangle/hexahedral meshes and crashes the gmsh ";
   advice += "library Lituya uses (gmsh " + version + "), while Lituya needs linear triangles ";
   advice += "(2D) or tetrahedra (3D). Remove the option, or choose a triangle algorithm, e.g. ";
-  double algorithm = 0;
-  gmsh::option::getNumber("Mesh.Algorithm", algorithm);
-  if (algorithm == 8)
-    throw InputError(geometry.string(),
-                     line_matching(geometry, std::regex(R"(\bMesh\.Algorithm\s*=)")),
-                     "Mesh.Algorithm = 8 (Frontal-Delaunay for quads) is not supported" + advice +
-                         "Mesh.Algorithm = 6 (Frontal-Delaunay, gmsh's default)");
+  // The global options gmsh can read back, each with the value that crashes and the fix.
+  struct Crashing {
+    const char* option;
+    double value;
+    int dimension;  // 2: checked in 2D and 3D; 3: only in 3D
+    const char* what;
+    const char* instead;
+  };
+  static const Crashing options[] = {
+      {"Mesh.Algorithm", 8, 2, "Frontal-Delaunay for quads",
+       "Mesh.Algorithm = 6 (Frontal-Delaunay, gmsh's default)"},
+      {"Mesh.Algorithm3D", 9, 3, "R-tree", "Mesh.Algorithm3D = 1 (Delaunay, gmsh's default)"},
+  };
+  for (const Crashing& c : options) {
+    if (c.dimension > dimension) continue;
+    double value = 0;
+    gmsh::option::getNumber(c.option, value);
+    if (value != c.value) continue;
+    const std::string name = c.option;
+    const std::string pattern =
+        "\\b" + std::regex_replace(name, std::regex("\\."), "\\.") + "\\s*=";
+    throw InputError(geometry.string(), line_matching(geometry, std::regex(pattern)),
+                     name + " = " + std::to_string(static_cast<int>(c.value)) + " (" + c.what +
+                         ") is not supported" + advice + c.instead);
+  }
   // The value of a per-surface algorithm cannot be read back through gmsh's API, so only a
   // literal 8 in the file itself is found.
   const int per_surface =
@@ -186,14 +204,6 @@ void refuse_crashing_algorithms(const std::filesystem::path& geometry, int dimen
                      "MeshAlgorithm Surface {...} = 8 (Frontal-Delaunay for quads) is not "
                      "supported" +
                          advice + "6 (Frontal-Delaunay, gmsh's default)");
-  if (dimension == 3) {
-    gmsh::option::getNumber("Mesh.Algorithm3D", algorithm);
-    if (algorithm == 9)
-      throw InputError(geometry.string(),
-                       line_matching(geometry, std::regex(R"(\bMesh\.Algorithm3D\s*=)")),
-                       "Mesh.Algorithm3D = 9 (R-tree) is not supported" + advice +
-                           "Mesh.Algorithm3D = 1 (Delaunay, gmsh's default)");
-  }
 }
 
 // The total area (2D) or volume (3D) of the open model's entities of dimension `dim`, before

@@ -32,8 +32,8 @@
 namespace lituya::solver {
 
 template <int dim>
-void Simulation<dim>::scatter_liquid(const std::vector<double>& point_values,
-                                     std::vector<double>& nodal) {
+const std::vector<double>& Simulation<dim>::scatter_liquid(
+    const std::vector<double>& point_values) {
   // nodal_i = sum_q V_q N_i(x_q) point_values_q, with per-thread sums added in a fixed order
   // (nodal_scatter.hpp): the projection runs inside the time loop, so its rounding must not
   // depend on the threads' timing.
@@ -45,7 +45,7 @@ void Simulation<dim>::scatter_liquid(const std::vector<double>& point_values,
         const double w = liquid.volume[q] * point_values[q];
         for (int i = 0; i <= dim; ++i) s.value[nodes[i]] += water_.shape[q](i) * w;
       });
-  nodal = projection_.sums.sums().value;
+  return projection_.sums.sums().value;
 }
 
 template <int dim>
@@ -75,14 +75,14 @@ int Simulation<dim>::project_liquid_pressure() {
   s.point_values.resize(liquid.size());
   // Lumped diagonal (sum_q V_q N_i) and right-hand side.
   std::fill(s.point_values.begin(), s.point_values.end(), 1.0);
-  scatter_liquid(s.point_values, s.diagonal);
-  scatter_liquid(liquid.pressure, s.rhs);
+  s.diagonal = scatter_liquid(s.point_values);
+  s.rhs = scatter_liquid(liquid.pressure);
   auto apply = [&](const std::vector<double>& x, std::vector<double>& y) {
     gather_liquid(x, s.point_values);
-    scatter_liquid(s.point_values, y);
+    const std::vector<double>& mapped = scatter_liquid(s.point_values);
     // A node carried by almost no water: keep its equation well posed (its value hardly
     // matters to any point).
-    for (std::size_t i = 0; i < n_nodes; ++i) y[i] += 1e-12 * s.diagonal[i] * x[i];
+    for (std::size_t i = 0; i < n_nodes; ++i) y[i] = mapped[i] + 1e-12 * s.diagonal[i] * x[i];
   };
   // Warm start: previous nodal values where the node still carries water, else the lumped
   // average.
@@ -135,8 +135,8 @@ int Simulation<dim>::project_liquid_pressure() {
   return iteration;
 }
 
-template void Simulation<2>::scatter_liquid(const std::vector<double>&, std::vector<double>&);
-template void Simulation<3>::scatter_liquid(const std::vector<double>&, std::vector<double>&);
+template const std::vector<double>& Simulation<2>::scatter_liquid(const std::vector<double>&);
+template const std::vector<double>& Simulation<3>::scatter_liquid(const std::vector<double>&);
 template void Simulation<2>::gather_liquid(const std::vector<double>&, std::vector<double>&) const;
 template void Simulation<3>::gather_liquid(const std::vector<double>&, std::vector<double>&) const;
 template int Simulation<2>::project_liquid_pressure();

@@ -99,9 +99,8 @@ void Simulation<dim>::setup_liquid() {
                   (material.dry_density() + n * water.liquid_density));
     soil.wave_speed = std::max(soil.wave_speed, undrained);
   }
-  water_.allocate_nodes(threads_, n_nodes);
-  coupling_.allocate(threads_, n_nodes);
-  projection_.sums.allocate(threads_, n_nodes);
+  // The nodal buffers of the water, the coupling and the projection are sized by set_threads,
+  // which the constructor calls before this.
   node_porosity_.assign(n_nodes, 1.0);
   node_pressure_.assign(n_nodes, 0.0);
   node_pore_pressure_push_.assign(n_nodes, 0.0);

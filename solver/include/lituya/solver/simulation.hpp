@@ -154,7 +154,8 @@ class Simulation {
   void update_liquid_and_relocate(double dt);
   // Pressure-projection stabilisation (pressure_projection.cpp); returns CG iterations.
   int project_liquid_pressure();
-  void scatter_liquid(const std::vector<double>& point_values, std::vector<double>& nodal);
+  // sum_q V_q N_i(x_q) point_values_q at each node; the result lives in projection_.sums.
+  const std::vector<double>& scatter_liquid(const std::vector<double>& point_values);
   void gather_liquid(const std::vector<double>& nodal, std::vector<double>& point_values) const;
   void report_progress(const Stage& stage, double t, double wall, bool final_line);
   void apply_tractions();
