@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Quick start, step 1: install what is missing, build, and run the main example (Case A of
-# the reference paper, 2D) from its gmsh geometry to plots.
+# Quick start, step 1: install what is missing, build, and run the main example (Case B of
+# the reference paper, 2D: a slide raising a wave) from its gmsh geometry to plots.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
