@@ -42,7 +42,8 @@ const char* kUsage =
 usage:
   lituya pre    SCENE.toml [-o CASE] [--force] [--allow-large-mesh]
                                                    mesh the scene, seed points, write the case
-  lituya solve  CASE [--threads N] [--force]       run the case's stages, write CASE/output
+  lituya solve  CASE [--threads N] [--force | --resume | --from-stage NAME]
+                                                   run the case's stages, write CASE/output
   lituya post   CASE [--force] [--allow-incomplete]
                                                    runout, profiles, wall height -> CASE/post
   lituya run    SCENE.toml [-o CASE] [--threads N] [--force] [--allow-large-mesh]
@@ -50,17 +51,20 @@ usage:
   lituya verify [--full] [-o REPORT] [--threads N] [--case NAME] [--force]
                                                    run the verification cases, write a report
   lituya sweep  SCENE.toml --parameter KEY --values V1,V2,... [--measure M,...] [-o DIR]
-                [--threads N] [--force] [--dry-run]
-                                                   run the scene once per value of KEY, then
-                                                   tabulate and plot the measures against it
-  lituya sweep  SWEEP.toml [--measure M,...] [-o DIR] [--threads N] [--force] [--dry-run]
+                [--combine grid|zip] [--jobs N] [--threads N] [--force | --resume] [--dry-run]
+                [--no-reuse]
+                                                   run the scene once per value of KEY (or per
+                                                   combination of several KEYs), then tabulate
+                                                   and plot the measures against it
+  lituya sweep  SWEEP.toml [--measure M,...] [-o DIR] [--jobs N] [--threads N]
+                [--force | --resume] [--dry-run] [--no-reuse]
                                                    the same, defined in a sweep file
   lituya COMMAND --help                            the command's usage and options
   lituya --version                                 the version and the git commit built from
 
 Every command also takes -q/--quiet (print errors only) and --verbose (also the version,
-the threads and the time of each step). --threads N defaults to OMP_NUM_THREADS when it is
-set, else to the number of cores.
+the threads, the time of each step and gmsh's own messages). --threads N defaults to
+OMP_NUM_THREADS when it is set, else to the number of cores.
 
 CASE defaults to the folder 'case' next to SCENE.toml. Nothing is overwritten unless --force
 is given. File formats: manuals/file-formats.md; user manual: manuals/user-manual.md.
@@ -69,13 +73,21 @@ is given. File formats: manuals/file-formats.md; user manual: manuals/user-manua
 const char* kSweepDetails =
     R"(KEY is a dotted path to one value of the scene, e.g. material.beads.friction_angle,
 stage.release.courant, mesh.cell_size ([[...]] entries by name or group). A value may be a
-range START:STOP:STEP; write --values=-5,0,5 when the first value is negative. Measures:
-gauge_first_crest[:GAUGE], gauge_max[:GAUGE], leading_wave_max, front_travel_final,
-front_travel_max, wall_height_final, wall_height_max (default: gauge_first_crest at every
-gauge, else front_travel_final). DIR defaults to sweep_<KEY> next to the scene (for a sweep
-file: its name without .toml). --dry-run checks every scene copy and measure and lists the
-runs without running them. Exit code 5: at least one run of the sweep failed (the table
-marks it; the others are complete).)";
+range START:STOP:STEP; write --values=-5,0,5 when the first value is negative. Several keys:
+repeat --parameter KEY --values ... per key; --combine grid (default) runs every combination,
+--combine zip the i-th values of every key together. Measures: gauge_first_crest[:GAUGE],
+gauge_max[:GAUGE], leading_wave_max, front_travel_final, front_travel_max, wall_height_final,
+wall_height_max (default: gauge_first_crest at every gauge, else front_travel_final). DIR
+defaults to sweep_<KEY> next to the scene (several keys joined by '+'; for a sweep file: its
+name without .toml). --dry-run checks every scene copy and measure and lists the runs without
+running them. --jobs N runs N runs side by side, each in a process of its own with one thread
+unless --threads says otherwise (the same results as one after another). --resume continues
+a stopped sweep in DIR: a run whose scene copy is unchanged and whose solve completed on the
+same case files is kept, not run again. A run whose first stages read the same inputs as those
+of a run that finished (a key that only a later stage reads) starts from that run's
+end-of-stage checkpoint instead of running them again, with the same results to the last bit;
+--no-reuse runs every run whole. Exit code 5: at least one run of the sweep failed
+(the table marks it; the others are complete).)";
 
 const std::vector<std::string> kCommands = {"pre", "solve", "post", "run", "verify", "sweep"};
 
@@ -130,12 +142,17 @@ struct Options {
   bool quiet = false;
   bool verbose = false;
   std::vector<std::string> cases;
-  std::string parameter;              // sweep
-  std::string values;                 // sweep
-  std::vector<std::string> measures;  // sweep
-  bool dry_run = false;               // sweep
-  bool allow_incomplete = false;      // post
-  bool allow_large_mesh = false;      // pre, run
+  std::vector<std::string> parameters;  // sweep, paired in order with `values`
+  std::vector<std::string> values;      // sweep
+  std::string combine = "grid";         // sweep
+  int jobs = 1;                         // sweep
+  std::vector<std::string> measures;    // sweep
+  bool dry_run = false;                 // sweep
+  bool no_reuse = false;                // sweep
+  bool allow_incomplete = false;        // post
+  bool allow_large_mesh = false;        // pre, run
+  bool resume = false;                  // solve, sweep
+  std::string from_stage;               // solve
 };
 
 // One command: its synopsis, what it does, and the only options it accepts.
@@ -160,7 +177,7 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
     d.add_options()("help,h", "show this help")("quiet,q", po::bool_switch(&o.quiet),
                                                 "print errors only")(
         "verbose", po::bool_switch(&o.verbose),
-        "also print the version, the threads and the time of each step");
+        "also print the version, the threads, the time of each step and gmsh's messages");
   };
   auto output = [&](po::options_description& d, const char* what) {
     d.add_options()("output,o", po::value(&o.output)->value_name("DIR"), what);
@@ -197,10 +214,18 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
   }
   {
     Command c =
-        make("solve", "lituya solve CASE [--threads N] [--force]",
-             "Run the case's stages and write the VTU series to CASE/output.", "a case folder");
+        make("solve", "lituya solve CASE [--threads N] [--force | --resume | --from-stage NAME]",
+             "Run the case's stages and write the VTU series to CASE/output. Checkpoints go "
+             "to\nCASE/output/checkpoints: at the end of each stage, every [solver] "
+             "checkpoint_interval_minutes\nand when stopped by Ctrl-C or SIGTERM.",
+             "a case folder");
     threads_option(c.options);
     force(c.options, "write into CASE/output when it already holds files");
+    c.options.add_options()("resume", po::bool_switch(&o.resume),
+                            "go on from the newest checkpoint in CASE/output")(
+        "from-stage", po::value(&o.from_stage)->value_name("NAME"),
+        "re-run stage NAME and the later ones from the end-of-stage checkpoint of the stage "
+        "before it");
     common(c.options);
     table.push_back(std::move(c));
   }
@@ -249,23 +274,33 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
   {
     Command c = make("sweep",
                      "lituya sweep SCENE.toml --parameter KEY --values V1,V2,... [--measure M,...] "
-                     "[-o DIR]\n              [--threads N] [--force] [--dry-run]\n"
-                     "       lituya sweep SWEEP.toml [--measure M,...] [-o DIR] [--threads N] "
-                     "[--force] [--dry-run]",
-                     std::string("Run the scene once per value of KEY (pre + solve + post), then "
-                                 "tabulate and plot the\nmeasures against it.\n\n") +
+                     "[-o DIR]\n              [--combine grid|zip] [--jobs N] [--threads N] "
+                     "[--force | --resume] [--dry-run]\n              [--no-reuse]\n"
+                     "       lituya sweep SWEEP.toml [--measure M,...] [-o DIR] [--jobs N] "
+                     "[--threads N] [--force | --resume]\n              [--dry-run] [--no-reuse]",
+                     std::string("Run the scene once per value of KEY, or per combination of the "
+                                 "values of several\nKEYs (pre + solve + post), then tabulate and "
+                                 "plot the measures against it.\n\n") +
                          kSweepDetails,
                      "a scene file (with --parameter and --values) or a sweep file");
-    c.options.add_options()("parameter,p", po::value(&o.parameter)->value_name("KEY"),
-                            "the scene key to vary")("values",
-                                                     po::value(&o.values)->value_name("V1,V2,..."),
-                                                     "its values, V1,V2,... or START:STOP:STEP")(
+    c.options.add_options()("parameter,p", po::value(&o.parameters)->composing()->value_name("KEY"),
+                            "the scene key to vary (repeatable, one --values each)")(
+        "values", po::value(&o.values)->composing()->value_name("V1,V2,..."),
+        "its values, V1,V2,... or START:STOP:STEP")(
+        "combine", po::value(&o.combine)->value_name("grid|zip"),
+        "several keys: every combination (grid, the default) or the i-th values together (zip)")(
+        "jobs,j", po::value(&o.jobs)->value_name("N"),
+        "runs side by side, each in a process of its own (default 1)")(
+        "resume", po::bool_switch(&o.resume),
+        "continue the sweep in its folder, keeping the runs that finished")(
         "measure,m", po::value(&o.measures)->composing()->value_name("M,..."),
         "what to tabulate and plot (repeatable)")("dry-run", po::bool_switch(&o.dry_run),
-                                                  "check and list the runs, run nothing");
+                                                  "check and list the runs, run nothing")(
+        "no-reuse", po::bool_switch(&o.no_reuse),
+        "run every run whole, even the first stages it shares with another run");
     output(c.options, "the sweep folder (default: sweep_<KEY>/ next to the scene file)");
     threads_option(c.options);
-    force(c.options, "write into a sweep folder that already holds files");
+    force(c.options, "write into a sweep folder that already holds files and run every run again");
     common(c.options);
     table.push_back(std::move(c));
   }
@@ -376,7 +411,22 @@ int parse(int argc, char** argv, Options& o) {
   }
   if (o.quiet && o.verbose) throw UsageError(o.command, "--quiet and --verbose exclude each other");
   if (o.threads < 1) throw UsageError(o.command, "--threads must be at least 1");
+  if (o.jobs < 1) throw UsageError(o.command, "--jobs must be at least 1");
+  if (o.combine != "grid" && o.combine != "zip")
+    throw UsageError(o.command, "--combine takes grid or zip, not '" + o.combine + "'");
+  if (o.resume + o.force + vm.count("from-stage") > 1)
+    throw UsageError(o.command, o.command == "solve"
+                                    ? "--force, --resume and --from-stage exclude each other"
+                                    : "--force and --resume exclude each other");
+  if (vm.count("from-stage") && o.from_stage.empty())
+    throw UsageError(o.command, "--from-stage needs the name of a stage");
   if (vm.count("threads")) o.threads_source = "--threads";
+  // Runs side by side are single-thread runs unless --threads says otherwise: N runs of one
+  // thread fill N cores without the runs competing for them.
+  if (o.jobs > 1 && !vm.count("threads")) {
+    o.threads = 1;
+    o.threads_source = "--jobs " + std::to_string(o.jobs) + ": one per run";
+  }
   if (command->input.empty() && !o.input.empty())
     throw UsageError(o.command,
                      "'lituya " + o.command + "' takes no argument (got '" + o.input + "')");
@@ -474,7 +524,13 @@ void run_post(const fs::path& case_folder, const Options& o) {
     std::cerr << "lituya: warning: " << *problem << "; measuring the output there is\n";
   }
   if (!fs::exists(case_folder / "post.toml")) {
-    std::cout << "post: skipped (the scene has no [post] table)\n";
+    // Nothing to measure, but the probes and stage histories the run wrote are still plotted.
+    const auto plots = lituya::post::plot_run_histories(case_folder, case_folder / "post", o.force);
+    if (plots.files.empty())
+      std::cout << "post: skipped (the scene has no [post] table)\n";
+    else
+      std::cout << "post: no [post] table; probe and stage history plots in "
+                << (case_folder / "post").string() << "\n";
     return;
   }
   lituya::post::postprocess(case_folder, case_folder / "post", o.force);
@@ -486,6 +542,8 @@ void run_solve(const fs::path& case_folder, const Options& o) {
   lituya::solver::SolveOptions options;
   options.threads = o.threads;
   options.overwrite = o.force;
+  options.resume = o.resume;
+  options.from_stage = o.from_stage;
   options.progress = progress_stream(o);
   // SIGINT/SIGTERM during the solve stop it cleanly (RunStopped); outside it they end the
   // process as usual, since nothing else would notice the request.
@@ -504,17 +562,24 @@ int run_sweep(const Options& o, std::ostream& errors) {
   StepTimer timer(o, "sweep");
   lituya::sweep::SweepDefinition definition;
   if (lituya::sweep::is_sweep_file(o.input)) {
-    if (!o.parameter.empty() || !o.values.empty())
-      throw UsageError("sweep", "give --parameter and --values in the sweep file " + o.input +
-                                    " or on the command line with a scene, not both");
+    if (!o.parameters.empty() || !o.values.empty() || o.combine != "grid")
+      throw UsageError("sweep", "give --parameter, --values and --combine in the sweep file " +
+                                    o.input + " or on the command line with a scene, not both");
     definition = lituya::sweep::read_sweep_file(o.input);
   } else {
-    if (o.parameter.empty() || o.values.empty())
+    if (o.parameters.empty() || o.values.empty())
       throw UsageError("sweep",
                        "'lituya sweep SCENE.toml' needs --parameter KEY and --values V1,V2,...");
+    if (o.parameters.size() != o.values.size())
+      throw UsageError("sweep", "each --parameter needs its own --values (got " +
+                                    std::to_string(o.parameters.size()) + " --parameter and " +
+                                    std::to_string(o.values.size()) + " --values)");
     definition.scene = o.input;
-    definition.parameter = o.parameter;
-    definition.values = lituya::sweep::parse_value_list(o.values);
+    for (size_t p = 0; p < o.parameters.size(); ++p)
+      definition.parameters.push_back(
+          {o.parameters[p], lituya::sweep::parse_value_list(o.values[p])});
+    definition.combination =
+        o.combine == "zip" ? lituya::sweep::Combination::kZip : lituya::sweep::Combination::kGrid;
   }
   if (!o.measures.empty()) {
     definition.measures.clear();
@@ -525,11 +590,14 @@ int run_sweep(const Options& o, std::ostream& errors) {
   if (!o.output.empty()) definition.output = o.output;
   lituya::sweep::SweepOptions options;
   options.threads = o.threads;
+  options.jobs = o.jobs;
   options.overwrite = o.force;
+  options.resume = o.resume;
   options.progress = progress_stream(o);
   options.progress_is_terminal = isatty(fileno(stderr));
   options.report = &std::cout;
   options.dry_run = o.dry_run;
+  options.reuse = !o.no_reuse;
   const lituya::sweep::SweepResult result = lituya::sweep::run_sweep(definition, options);
   if (result.all_ok()) return 0;
   // Without --quiet the table names the failed runs; with it, this line is all there is.
@@ -545,7 +613,8 @@ int run_sweep(const Options& o, std::ostream& errors) {
 
 void run_pre(const fs::path& scene, const fs::path& case_folder, const Options& o) {
   StepTimer timer(o, "pre");
-  auto s = lituya::pre::preprocess(scene, case_folder, o.force, o.allow_large_mesh);
+  auto s = lituya::pre::preprocess(scene, case_folder, o.force, o.allow_large_mesh,
+                                   /*gmsh_messages=*/o.verbose);
   std::cout << "pre: " << s.dimension << "D case with " << s.nodes << " nodes, " << s.cells
             << " cells, " << s.points << " material points in " << case_folder.string() << "\n";
 }
@@ -557,6 +626,7 @@ int run_verify(const Options& o, std::ostream& errors) {
   options.threads = o.threads;
   options.overwrite = o.force;
   options.only = o.cases;
+  options.progress = o.quiet ? nullptr : &std::cout;
   options.report_folder = o.output.empty() ? fs::path("verification-report") : fs::path(o.output);
   if (lituya::verify::run_verification(options)) return 0;
   if (o.quiet)
@@ -576,8 +646,6 @@ int run_command(const Options& o, std::ostream& errors) {
       std::cerr << ", " << o.threads << (o.threads == 1 ? " thread" : " threads") << " ("
                 << o.threads_source << ")";
     std::cerr << "\n";
-    // gmsh's own messages: the preprocessor opens gmsh with its terminal output off and has no
-    // switch for it yet, so --verbose cannot show them.
   }
   if (o.command == "pre") {
     run_pre(o.input, o.output.empty() ? default_case(o.input) : fs::path(o.output), o);
@@ -619,7 +687,7 @@ int main(int argc, char** argv) {
   } catch (const lituya::RunStopped& e) {
     quiet.errors() << "\nlituya: " << e.what()
                    << "; the output up to then is kept and summary.toml says completed = "
-                      "false\n";
+                      "false; `lituya solve CASE --resume` goes on from there\n";
     return 128 + e.signal();  // as a shell reports a process ended by the signal
   } catch (const IncompleteRun& e) {
     quiet.errors() << "lituya: post: " << e.what() << "\n";

@@ -2,8 +2,16 @@
 # Installs what Lituya needs from Debian packages (only what is missing). Run as root or
 # with sudo available.
 set -euo pipefail
-packages=(build-essential cmake libeigen3-dev libvtk9-dev libgmsh-dev libboost-program-options-dev
-          libtomlplusplus-dev libgtest-dev gnuplot-nox)
+packages=(build-essential cmake libeigen3-dev libgmsh-dev gmsh libboost-program-options-dev
+          libtomlplusplus-dev nlohmann-json3-dev libgtest-dev gnuplot-nox zlib1g-dev)
+# VTK: Debian's libvtk9-dev, unless ParaView's Python tools are installed. python3-paraview
+# conflicts with python3-vtk9 (a dependency of libvtk9-dev), so installing libvtk9-dev would
+# remove it; the VTK inside ParaView (paraview-dev) builds Lituya just as well.
+if dpkg -s python3-paraview >/dev/null 2>&1; then
+  packages+=(paraview-dev)
+else
+  packages+=(libvtk9-dev)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

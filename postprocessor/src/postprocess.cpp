@@ -6,12 +6,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <limits>
 #include <set>
 #include <sstream>
 
 #include "lituya/common/atomic_file.hpp"
+#include "lituya/common/csv_writer.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/output_folder.hpp"
 #include "lituya/common/toml_reader.hpp"
@@ -23,35 +25,25 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A blank field is "no value" (the same convention as the reference CSV), so a time at which
-// no front could be found plots as a gap rather than as a misleading number.
-std::string csv_number(double v) {
-  if (!std::isfinite(v)) return "";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", v);
-  return text;
-}
-
-// A table is gathered in memory and written whole by close(), through write_file_atomically:
-// a full disk leaves the earlier table (post --force) or none, never a torn one.
+// A table gathered in memory and written whole by close(), through the project's CSV writer
+// (RFC 4180 quoting, numbers that read back exactly, a blank field for "no value" as in the
+// reference CSV, so that a time at which no front could be found plots as a gap rather than as
+// a misleading number). It is written atomically: a full disk leaves the earlier table (post
+// --force) or none, never a torn one.
 class CsvFile {
  public:
-  CsvFile(const fs::path& file, const std::string& header) : file_(file) { out_ << header << "\n"; }
+  CsvFile(const fs::path& file, const std::vector<std::string>& header)
+      : file_(file), table_(header) {}
   template <typename... Values>
   void row(const Values&... values) {
-    bool first = true;
-    ((out_ << (first ? "" : ",") << csv_number(values), first = false), ...);
-    out_ << "\n";
+    table_.row({static_cast<double>(values)...});
   }
-  void row(const std::vector<double>& values) {
-    for (size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << csv_number(values[i]);
-    out_ << "\n";
-  }
-  void close() { write_file_atomically(file_, out_.str()); }
+  void row(const std::vector<double>& values) { table_.row(values); }
+  void close() { table_.write(file_); }
 
  private:
   fs::path file_;
-  std::ostringstream out_;
+  CsvWriter table_;
 };
 
 // The dimension decides how a point's volume becomes its spacing; stages.toml states it, the
@@ -229,8 +221,8 @@ bool measure_slide(const PostSettings& settings, const SlideInput& input,
   const fs::path wall_csv = out.file("wall_height.csv");
   const fs::path profiles_csv = out.file("profiles.csv");
   {
-    CsvFile runout(runout_csv, "time,front_position,front_travel");
-    CsvFile wall(wall_csv, "time,wall_height");
+    CsvFile runout(runout_csv, {"time", "front_position", "front_travel"});
+    CsvFile wall(wall_csv, {"time", "wall_height"});
     for (size_t k = 0; k < result.time.size(); ++k) {
       runout.row(result.time[k], result.front_position[k], result.front_travel[k]);
       wall.row(result.time[k], result.wall_height[k]);
@@ -241,7 +233,7 @@ bool measure_slide(const PostSettings& settings, const SlideInput& input,
   // Two requested times may fall on the same output: its profile is written once.
   std::vector<double> profile_times_written;
   {
-    CsvFile profiles(profiles_csv, "time,s,thickness");
+    CsvFile profiles(profiles_csv, {"time", "s", "thickness"});
     std::set<double> written;
     for (const TimedProfile& profile : result.profiles) {
       if (!written.insert(profile.time).second) continue;
@@ -261,8 +253,8 @@ bool measure_slide(const PostSettings& settings, const SlideInput& input,
       copy_file_atomically(settings.reference_file, copy);
     reference_runout_csv = out.file("reference_runout.csv");
     reference_wall_csv = out.file("reference_wall_height.csv");
-    CsvFile runout(reference_runout_csv, "time,front_travel");
-    CsvFile wall(reference_wall_csv, "time,wall_height");
+    CsvFile runout(reference_runout_csv, {"time", "front_travel"});
+    CsvFile wall(reference_wall_csv, {"time", "wall_height"});
     const ReferenceData& reference = *input.reference;
     for (size_t k = 0; k < reference.time.size(); ++k) {
       if (reference.front_travel[k]) runout.row(reference.time[k], *reference.front_travel[k]);
@@ -359,8 +351,8 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
 
   if (gauges > 0) {
     const fs::path gauges_csv = out.file("gauges.csv");
-    std::string header = "time";
-    for (const std::string& name : settings.gauge_names) header += "," + name;
+    std::vector<std::string> header{"time"};
+    header.insert(header.end(), settings.gauge_names.begin(), settings.gauge_names.end());
     CsvFile table(gauges_csv, header);
     for (size_t k = 0; k < result.liquid_time.size(); ++k) {
       std::vector<double> row{result.liquid_time[k]};
@@ -388,7 +380,7 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
         if (!any) continue;
         // By index, not by name: a gauge name need not make a valid file name.
         const fs::path csv = out.file("reference_gauge_" + std::to_string(g + 1) + ".csv");
-        CsvFile table_g(csv, "time," + settings.gauge_names[g]);
+        CsvFile table_g(csv, {"time", settings.gauge_names[g]});
         for (size_t r = 0; r < reference.time.size(); ++r)
           if (reference.value[g][r]) table_g.row(reference.time[r], *reference.value[g][r]);
         table_g.close();
@@ -403,7 +395,7 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
 
   if (settings.leading_wave) {
     const fs::path leading_csv = out.file("leading_wave.csv");
-    CsvFile table(leading_csv, "time,crest_x,crest_height,max_eta");
+    CsvFile table(leading_csv, {"time", "crest_x", "crest_height", "max_eta"});
     for (size_t k = 0; k < result.liquid_time.size(); ++k)
       table.row(result.liquid_time[k], result.crest_x[k], result.crest_eta[k], result.max_eta[k]);
     table.close();
@@ -422,7 +414,7 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
   const fs::path surface_csv = out.file("surface_profiles.csv");
   std::vector<PlotSeries> surface_series;
   {
-    CsvFile table(surface_csv, "time,x,eta");
+    CsvFile table(surface_csv, {"time", "x", "eta"});
     std::set<double> written;
     for (const TimedSurface& profile : result.surface_profiles) {
       if (!written.insert(profile.time).second) continue;
@@ -436,6 +428,107 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
   plotted = out.plot("surface_profiles.png", "Water surface along the flume" + stage, "x (m)",
                      "elevation above still water (m)", surface_series) &&
             plotted;
+  return plotted;
+}
+
+// The columns of a CSV table the solver wrote (header, and whether each column holds at least
+// one value: a probe away from the water has no pore pressure, and gnuplot refuses a curve
+// without a single point).
+struct TableColumns {
+  std::vector<std::string> names;
+  std::vector<bool> has_value;
+};
+TableColumns table_columns(const fs::path& csv) {
+  TableColumns t;
+  std::ifstream in(csv);
+  std::string line;
+  if (!std::getline(in, line)) return t;
+  t.names = csv_split(line);
+  t.has_value.assign(t.names.size(), false);
+  while (std::getline(in, line)) {
+    const std::vector<std::string> fields = csv_split(line);
+    for (std::size_t k = 0; k < fields.size() && k < t.has_value.size(); ++k)
+      if (!fields[k].empty()) t.has_value[k] = true;
+  }
+  return t;
+}
+
+// One PNG of the columns whose names start with one of `prefixes` against `x_column`; nothing
+// when none holds a value. Returns false when a plot could not be made.
+bool plot_columns(PostFolder& out, const fs::path& csv, const TableColumns& table,
+                  const std::string& x_column, const std::vector<std::string>& prefixes,
+                  const std::string& png, const std::string& title, const std::string& xlabel,
+                  const std::string& ylabel) {
+  std::vector<PlotSeries> series;
+  const auto x = std::find(table.names.begin(), table.names.end(), x_column);
+  if (x == table.names.end()) return true;
+  for (std::size_t k = 0; k < table.names.size(); ++k) {
+    const std::string& name = table.names[k];
+    const bool wanted = std::any_of(prefixes.begin(), prefixes.end(), [&](const std::string& p) {
+      return name == p || name.rfind(p + "_", 0) == 0;
+    });
+    if (!wanted || !table.has_value[k]) continue;
+    PlotSeries s{csv, static_cast<int>(x - table.names.begin()) + 1, static_cast<int>(k) + 1, name};
+    series.push_back(s);
+  }
+  if (series.empty()) return true;
+  return out.plot(png, title, xlabel, ylabel, series);
+}
+
+// The probes (output/probes/<name>.csv) against the run's time, one plot per field, and each
+// stage's history (output/<stage>_history.csv) against the stage's time. The plots read the
+// tables where the solver wrote them.
+bool plot_time_histories(const fs::path& case_folder, PostFolder& out) {
+  bool plotted = true;
+  const fs::path output = case_folder / "output";
+  std::vector<fs::path> probes, histories;
+  std::error_code error;
+  if (fs::is_directory(output / "probes", error))
+    for (const auto& entry : fs::directory_iterator(output / "probes"))
+      if (entry.path().extension() == ".csv") probes.push_back(entry.path());
+  if (fs::is_directory(output, error))
+    for (const auto& entry : fs::directory_iterator(output)) {
+      const std::string name = entry.path().filename().string();
+      if (name.size() > 12 && name.compare(name.size() - 12, 12, "_history.csv") == 0)
+        histories.push_back(entry.path());
+    }
+  std::sort(probes.begin(), probes.end());
+  std::sort(histories.begin(), histories.end());
+  struct Field {
+    const char* column;
+    const char* label;
+  };
+  constexpr Field kFields[] = {{"pore_pressure", "pore pressure (Pa, compression positive)"},
+                               {"effective_stress", "effective stress (Pa, tension positive)"},
+                               {"velocity", "soil velocity (m/s)"},
+                               {"liquid_velocity", "water velocity (m/s)"},
+                               {"porosity", "porosity (-)"}};
+  for (const fs::path& csv : probes) {
+    const std::string name = csv.stem().string();
+    const TableColumns table = table_columns(csv);
+    for (const Field& f : kFields)
+      plotted = plot_columns(out, csv, table, "time", {f.column},
+                             "probe_" + name + "_" + f.column + ".png",
+                             "probe " + name + ": " + f.label, "time (s)", f.label) &&
+                plotted;
+  }
+  for (const fs::path& csv : histories) {
+    const std::string stem = csv.stem().string();  // <stage>_history
+    const std::string stage = stem.substr(0, stem.size() - 8);
+    const TableColumns table = table_columns(csv);
+    plotted = plot_columns(out, csv, table, "stage_time", {"kinetic_energy"},
+                           stem + "_kinetic_energy.png", "stage " + stage + ": kinetic energy",
+                           "time in stage (s)", "kinetic energy (J, per m in 2D)") &&
+              plotted;
+    plotted =
+        plot_columns(out, csv, table, "stage_time", {"time_step"}, stem + "_time_step.png",
+                     "stage " + stage + ": time step", "time in stage (s)", "time step (s)") &&
+        plotted;
+    plotted = plot_columns(out, csv, table, "stage_time", {"max_speed"}, stem + "_max_speed.png",
+                           "stage " + stage + ": largest point speed", "time in stage (s)",
+                           "speed (m/s)") &&
+              plotted;
+  }
   return plotted;
 }
 
@@ -458,7 +551,27 @@ PostResult postprocess(const fs::path& case_folder, const fs::path& post_folder,
   bool plotted = true;
   if (slide) plotted = measure_slide(settings, *slide, case_folder, dimension, out, result);
   if (water) plotted = measure_water(settings, *water, dimension, out, result) && plotted;
+  plotted = plot_time_histories(case_folder, out) && plotted;
   result.plots_written = plotted;
+  return result;
+}
+
+PostResult plot_run_histories(const fs::path& case_folder, const fs::path& post_folder,
+                              bool overwrite) {
+  PostResult result;
+  const fs::path output = case_folder / "output";
+  bool any = false;
+  std::error_code error;
+  if (fs::is_directory(output, error))
+    for (const auto& entry : fs::directory_iterator(output)) {
+      const std::string name = entry.path().filename().string();
+      any = any || name == "probes" ||
+            (name.size() > 12 && name.compare(name.size() - 12, 12, "_history.csv") == 0);
+    }
+  if (!any) return result;
+  prepare_output_folder(post_folder, overwrite);
+  PostFolder out(post_folder, result);
+  result.plots_written = plot_time_histories(case_folder, out);
   return result;
 }
 

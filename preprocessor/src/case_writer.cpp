@@ -149,6 +149,12 @@ void write_stages(const Scene& scene, const Mesh& mesh, bool has_liquid_points,
   out.add(toml::table{{"output", solver::to_toml(scene.output)}});
   if (!boundaries.empty()) out.add(toml::table{{"boundary", array_of(boundaries)}});
   out.add(toml::table{{"stage", array_of(stages)}});
+  std::vector<toml::table> probes;
+  for (const auto& p : scene.probes) probes.push_back(solver::to_toml(p));
+  if (!probes.empty()) out.add(toml::table{{"probe", array_of(probes)}});
+  std::vector<toml::table> sponges;
+  for (const auto& z : scene.sponges) sponges.push_back(solver::to_toml(z));
+  if (!sponges.empty()) out.add(toml::table{{"sponge", array_of(sponges)}});
   out.close();
 }
 

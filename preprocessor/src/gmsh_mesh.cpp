@@ -30,7 +30,12 @@ class GmshSession {
  public:
   explicit GmshSession(bool verbose) {
     gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+    // Without --verbose gmsh stays silent: its errors reach the user as InputErrors with the
+    // file and line, and its progress would bury Lituya's own lines. With it, gmsh prints up
+    // to its info level (5: what it reads, each meshing step and its time, warnings), stated
+    // so that it does not depend on the version's default.
     gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
+    if (verbose) gmsh::option::setNumber("General.Verbosity", 5);
     // Make every gmsh error an exception (the API default, stated so it does not depend on
     // the version), which read_gmsh_mesh turns into an InputError.
     gmsh::option::setNumber("General.AbortOnError", 2);

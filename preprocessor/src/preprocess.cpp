@@ -27,16 +27,18 @@ void refuse_occupied_folder(const fs::path& case_folder, bool overwrite) {
 }  // namespace
 
 PreprocessSummary preprocess(const fs::path& scene_file, const fs::path& case_folder,
-                             bool overwrite, bool allow_large_mesh) {
-  const Scene scene = read_scene(scene_file);
+                             bool overwrite, bool allow_large_mesh, bool gmsh_messages) {
+  Scene scene = read_scene(scene_file);
   refuse_occupied_folder(case_folder, overwrite);
-  MeshingOptions meshing{scene.dimension, scene.cell_size, false};
+  MeshingOptions meshing{scene.dimension, scene.cell_size, gmsh_messages};
   meshing.size_check = {!allow_large_mesh, scene.points_per_cell, scene.file, scene.cell_size_line};
   const Mesh mesh = read_gmsh_mesh(scene.geometry, meshing);
   check_scene_groups(scene, mesh);
 
   const InitialState state = make_initial_state(scene, mesh);
   const bool has_liquid_points = state.liquid.size() > 0;
+  check_probes(scene, mesh, state.solid.size(), state.liquid.size());
+  resolve_sponges(scene, state.liquid);
 
   prepare_output_folder(case_folder, overwrite);
   write_geometry(mesh, region_group_of_cells(scene, mesh), case_folder / kGeometryFile);

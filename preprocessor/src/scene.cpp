@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numeric>
 #include <set>
 
 #include "lituya/common/input_error.hpp"
@@ -255,6 +256,35 @@ void read_boundaries_and_stages(const TomlTable& root, Scene& scene) {
   if (auto o = root.optional_table("output")) scene.output = solver::read_output_settings(*o);
 }
 
+// [[probe]]: read here with the regions known, so that a water field in a dry scene is refused
+// at its line; whether a position lies in the mesh or a point id exists is checked once the
+// mesh and points are made (check_probes).
+void read_probes(const TomlTable& root, Scene& scene) {
+  const std::vector<TomlTable> tables = root.tables("probe");
+  for (const TomlTable& t : tables) {
+    scene.probes.push_back(solver::read_probe(t, scene.dimension, scene.has_water()));
+    const solver::Probe& p = scene.probes.back();
+    scene.probe_lines.push_back(
+        t.line_of(p.follows == solver::Probe::Follows::kPosition     ? "position"
+                  : p.follows == solver::Probe::Follows::kSolidPoint ? "solid_point"
+                                                                     : "liquid_point"));
+  }
+  solver::check_probe_names(scene.probes, tables);
+}
+
+// [[sponge]]: the zone and rate are checked here; that the zone holds water, and the default
+// rate from its depth, once the liquid points are seeded (resolve_sponges).
+void read_sponges(const TomlTable& root, Scene& scene) {
+  for (const TomlTable& t : root.tables("sponge")) {
+    if (!scene.has_water())
+      t.fail(
+          "a [[sponge]] damps the water at a tank end, and the scene has no water (no region "
+          "of a water material, no saturated soil)");
+    scene.sponges.push_back(solver::read_sponge(t, false));
+    scene.sponge_lines.push_back(t.line_of("x_start"));
+  }
+}
+
 // The [post] keys that name a data file for `lituya post`. The sweep rewrites the same keys
 // (scene_edit.cpp) to absolute paths.
 constexpr const char* kPostDataKeys[] = {"reference", "gauge_reference"};
@@ -340,6 +370,35 @@ void read_post(const TomlTable& root, const fs::path& scene_file, Scene& scene) 
   scene.post = std::move(settings);
 }
 
+// `lituya post` reads some fields of the output: a field selection in [output] that leaves one
+// of them out would let the whole solve run for nothing. Refused here, at the [output] key.
+void check_output_serves_post(const TomlTable& root, const Scene& scene) {
+  const std::optional<TomlTable> output = root.optional_table("output");
+  if (!output || !scene.post) return;
+  const toml::table& post = scene.post->table;
+  const solver::OutputSettings& o = scene.output;
+  auto refuse = [&](const char* key, const std::string& field, const std::string& why) {
+    output->fail(std::string("'") + key + "' leaves out \"" + field + "\", which `lituya post` " +
+                     why + ": add it, or remove the [post] key that asks for it",
+                 key);
+  };
+  const toml::array* tracked = post["track_materials"].as_array();
+  if (tracked && !tracked->empty() && scene.materials.size() > 1 &&
+      !o.writes(o.point_fields, "material"))
+    refuse("point_fields", "material",
+           "needs to tell the materials of [post] track_materials apart");
+  const toml::array* gauges = post["gauges"].as_array();
+  const bool measures_water = (gauges && !gauges->empty()) || post["leading_wave"].value_or(false);
+  if (!measures_water) return;
+  if (!o.writes(o.liquid_fields, "volume"))
+    refuse("liquid_fields", "volume",
+           "needs to place the water surface ([post] gauges, leading_wave)");
+  if (post["surface_min_porosity"].value_or(0.9) > 0 && !o.writes(o.liquid_fields, "porosity"))
+    refuse("liquid_fields", "porosity",
+           "needs to tell pore water from free water at the surface ([post] gauges, leading_wave; "
+           "surface_min_porosity = 0 counts all water)");
+}
+
 }  // namespace
 
 const solver::Material* Scene::water_of(const Region& r) const {
@@ -364,7 +423,10 @@ Scene read_scene(const fs::path& scene_file) {
   read_materials(root, scene);
   read_regions(root, scene);
   read_boundaries_and_stages(root, scene);
+  read_probes(root, scene);
+  read_sponges(root, scene);
   read_post(root, scene_file, scene);
+  check_output_serves_post(root, scene);
   root.finish();
   return scene;
 }
@@ -410,6 +472,102 @@ void check_scene_groups(const Scene& scene, const Mesh& mesh) {
     if (!mesh.find_group(boundary.group, dim - 1))
       missing_group(scene, mesh, "boundary", boundary.group, dim - 1,
                     scene.boundary_group_lines[b]);
+  }
+}
+
+namespace {
+// True when x lies in one of the mesh's simplices (barycentric coordinates all >= -1e-9), so a
+// probe on a cell face or at a node counts as inside.
+bool inside_mesh(const Mesh& mesh, const std::vector<double>& x) {
+  const int dim = mesh.dimension;
+  const int corners = mesh.nodes_per_cell();
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
+    const std::int64_t* nodes = &mesh.cell_nodes[c * corners];
+    auto at = [&](int k, int d) { return mesh.node_xyz[3 * nodes[k] + d]; };
+    // Columns of the Jacobian: edges from corner 0; solve J lambda = x - x0 by Cramer's rule.
+    double j[3][3] = {}, r[3] = {};
+    for (int d = 0; d < dim; ++d) {
+      r[d] = x[d] - at(0, d);
+      for (int k = 1; k <= dim; ++k) j[d][k - 1] = at(k, d) - at(0, d);
+    }
+    auto det = [&](const double(&m)[3][3]) {
+      if (dim == 2) return m[0][0] * m[1][1] - m[0][1] * m[1][0];
+      return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+             m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+             m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    };
+    const double volume = det(j);
+    if (volume == 0) continue;
+    double sum = 0;
+    bool inside = true;
+    for (int k = 0; k < dim && inside; ++k) {
+      double m[3][3];
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) m[a][b] = b == k ? r[a] : j[a][b];
+      const double lambda = det(m) / volume;
+      inside = lambda >= -1e-9;
+      sum += lambda;
+    }
+    if (inside && 1.0 - sum >= -1e-9) return true;
+  }
+  return false;
+}
+}  // namespace
+
+void check_probes(const Scene& scene, const Mesh& mesh, std::size_t solid_points,
+                  std::size_t liquid_points) {
+  for (std::size_t i = 0; i < scene.probes.size(); ++i) {
+    const solver::Probe& p = scene.probes[i];
+    const int line = scene.probe_lines[i];
+    if (p.follows == solver::Probe::Follows::kPosition) {
+      if (!inside_mesh(mesh, p.position)) {
+        std::string where;
+        for (double x : p.position) where += (where.empty() ? "" : ", ") + std::to_string(x);
+        throw InputError(scene.file, line,
+                         "probe '" + p.name + "' at (" + where + ") lies outside the mesh of " +
+                             scene.geometry.filename().string());
+      }
+      continue;
+    }
+    const bool solid = p.follows == solver::Probe::Follows::kSolidPoint;
+    const std::size_t count = solid ? solid_points : liquid_points;
+    if (static_cast<std::size_t>(p.point_id) >= count)
+      throw InputError(scene.file, line,
+                       "probe '" + p.name + "' rides on " + (solid ? "solid" : "liquid") +
+                           " point " + std::to_string(p.point_id) + ", but the scene has " +
+                           std::to_string(count) + " " + (solid ? "solid" : "liquid") +
+                           " points (ids 0 to " + std::to_string(count) + " - 1)");
+  }
+}
+
+void resolve_sponges(Scene& scene, const LiquidPoints& liquid) {
+  const double g = std::sqrt(
+      std::inner_product(scene.gravity.begin(), scene.gravity.end(), scene.gravity.begin(), 0.0));
+  const double exponent = 1.0 / scene.dimension;
+  for (std::size_t k = 0; k < scene.sponges.size(); ++k) {
+    solver::Sponge& sponge = scene.sponges[k];
+    const double lo = std::min(sponge.x_start, sponge.x_end);
+    const double hi = std::max(sponge.x_start, sponge.x_end);
+    // Depth: the span of the liquid points in the zone along y, each point counted with half
+    // its spacing above and below (a point's volume is its spacing to the power dimension).
+    double bottom = 1e300, top = -1e300;
+    for (std::size_t p = 0; p < liquid.volume.size(); ++p) {
+      const double x = liquid.position[3 * p], y = liquid.position[3 * p + 1];
+      if (x < lo || x > hi) continue;
+      const double half = 0.5 * std::pow(liquid.volume[p], exponent);
+      bottom = std::min(bottom, y - half);
+      top = std::max(top, y + half);
+    }
+    if (!(top > bottom))
+      throw InputError(scene.file, scene.sponge_lines[k],
+                       "the [[sponge]] from x = " + std::to_string(sponge.x_start) + " to " +
+                           std::to_string(sponge.x_end) +
+                           " m holds no water: place it over the water at a tank end");
+    if (sponge.damping_rate == 0 && g > 0)
+      sponge.damping_rate = solver::kDefaultSpongeStrength * std::sqrt(g / (top - bottom));
+    if (sponge.damping_rate == 0)
+      throw InputError(scene.file, scene.sponge_lines[k],
+                       "the scene has no gravity, so the [[sponge]] needs a 'damping_rate' (1/s)");
   }
 }
 

@@ -439,5 +439,136 @@ TEST_F(BadScene, GravityMustBeFinite) {
                {"'mesh.cell_size'", "not a finite number"});
 }
 
+// [output] field lists: an unknown field is refused at its line with the known ones, and a
+// selection that drops a field `lituya post` needs for the scene's [post] is refused before
+// any solve.
+TEST_F(BadScene, OutputFieldUnknown) {
+  const auto scene = kScene + "\n[output]\ngrid_fields = [\"mass\", \"speed\"]\n";
+  expect_error(scene, "scene.toml", line_of(scene, "grid_fields"),
+               {"unknown grid field \"speed\"", "known: mass, velocity, liquid_mass"});
+}
+
+TEST_F(BadScene, OutputDropsTheMaterialThatPostTracks) {
+  const std::string second = R"([[material]]
+name = "gravel"
+model = "linear-elastic"
+solid_density = 2000.0
+porosity = 0.3
+youngs_modulus = 2.0e7
+poisson_ratio = 0.3
+
+)";
+  const auto scene = replaced(kScene, "[[region]]", second + "[[region]]") +
+                     "\n[output]\npoint_fields = [\"velocity\"]\n"
+                     "\n[post]\nstage = \"gravity\"\ntrack_materials = [\"sand\"]\n";
+  expect_error(scene, "scene.toml", line_of(scene, "point_fields"),
+               {"'point_fields' leaves out \"material\"", "track_materials"});
+}
+
+TEST_F(BadScene, OutputDropsTheWaterFieldsThatGaugesNeed) {
+  const auto post = std::string("\n[post]\ngauges = [0.5]\nstill_water_level = 0.2\n");
+  auto scene = kScene + "\n[output]\nliquid_fields = [\"velocity\", \"porosity\"]\n" + post;
+  expect_error(scene, "scene.toml", line_of(scene, "liquid_fields"),
+               {"'liquid_fields' leaves out \"volume\"", "water surface"});
+  scene = kScene + "\n[output]\nliquid_fields = [\"volume\"]\n" + post;
+  expect_error(scene, "scene.toml", line_of(scene, "liquid_fields"),
+               {"'liquid_fields' leaves out \"porosity\"", "pore water"});
+  // Counting all water as surface water needs no porosity.
+  scene =
+      kScene + "\n[output]\nliquid_fields = [\"volume\"]\n" + post + "surface_min_porosity = 0\n";
+  testing::write_text(folder_ / "scene.toml", scene);
+  EXPECT_NO_THROW(read_scene(folder_ / "scene.toml"));
+}
+
+// [[probe]]: each mistake is refused at its line, before any solve.
+TEST_F(BadScene, ProbesAreCheckedAtTheirLines) {
+  const std::string probe = "\n[[probe]]\nname = \"sensor\"\nposition = [0.5, 0.5]\n";
+  // A valid probe goes into stages.toml, and the solver's reader gives it back.
+  testing::write_text(folder_ / "scene.toml", kScene + probe + "interval = 0.01\n");
+  preprocess(folder_ / "scene.toml", folder_ / "case", false);
+  const solver::CaseDescription c = solver::read_case((folder_ / "case").string());
+  ASSERT_EQ(c.probes.size(), 1u);
+  EXPECT_EQ(c.probes[0].name, "sensor");
+  EXPECT_EQ(c.probes[0].position, (std::vector<double>{0.5, 0.5}));
+  EXPECT_EQ(c.probes[0].interval, 0.01);
+  // A dry scene records the dry fields by default.
+  EXPECT_EQ(c.probes[0].fields,
+            (std::vector<std::string>{"effective_stress", "velocity", "porosity"}));
+  std::filesystem::remove_all(folder_ / "case");
+
+  auto scene = kScene + replaced(probe, "\"sensor\"", "\"../sensor\"");
+  expect_error(scene, "scene.toml", line_of(scene, "../sensor"), {"name"});
+  scene = kScene + probe + probe;
+  const std::size_t second = scene.rfind("name = \"sensor\"");
+  expect_error(scene, "scene.toml",
+               1 + static_cast<int>(std::count(
+                       scene.begin(), scene.begin() + static_cast<std::ptrdiff_t>(second), '\n')),
+               {"two [[probe]] entries are named 'sensor'"});
+  scene = kScene + replaced(probe, "position = [0.5, 0.5]", "fields = [\"velocity\"]");
+  expect_error(scene, "scene.toml", line_of(scene, "name = \"sensor\""),
+               {"exactly one of 'position'", "'solid_point'"});
+  scene = kScene + probe + "solid_point = 3\n";
+  expect_error(scene, "scene.toml", line_of(scene, "solid_point"), {"exactly one of"});
+  scene = kScene + replaced(probe, "[0.5, 0.5]", "[0.5, 0.5, 0.0]");
+  expect_error(scene, "scene.toml", line_of(scene, "position"), {"2 components"});
+  scene = kScene + probe + "fields = [\"pressure\"]\n";
+  expect_error(scene, "scene.toml", line_of(scene, "fields"),
+               {"unknown probe field \"pressure\"", "pore_pressure"});
+  scene = kScene + probe + "fields = [\"pore_pressure\"]\n";
+  expect_error(scene, "scene.toml", line_of(scene, "fields"), {"needs water"});
+  scene = kScene + probe + "interval = -1.0\n";
+  expect_error(scene, "scene.toml", line_of(scene, "interval"), {"interval"});
+  // Checked against the mesh and the points once they are made.
+  scene = kScene + replaced(probe, "[0.5, 0.5]", "[2.5, 0.5]");
+  expect_error(scene, "scene.toml", line_of(scene, "[2.5, 0.5]"),
+               {"probe 'sensor'", "outside the mesh"});
+  scene = kScene + replaced(probe, "position = [0.5, 0.5]", "solid_point = 1000000");
+  expect_error(scene, "scene.toml", line_of(scene, "solid_point"),
+               {"solid point 1000000", "solid points"});
+}
+
+// [[sponge]]: the zone is checked at its lines, and a sponge without damping_rate gets the
+// default kDefaultSpongeStrength sqrt(g / h) from the water depth in the zone.
+TEST_F(BadScene, SpongesAreCheckedAtTheirLines) {
+  const std::string wet = water_scene("water = \"water\"\n", "material = \"water\"\n");
+  const std::string sponge = "\n[[sponge]]\nx_start = 1.5\nx_end = 2.0\n";
+  // The "air" square [1, 2] x [0, 1] is free water 1 m deep: default rate 2 sqrt(9.81 / 1) =
+  // 6.26 /s. The depth comes from the points (the span of their centres plus one spacing), which
+  // the unstructured seeding puts within a few per cent of the square: tolerance 2 %.
+  testing::write_text(folder_ / "scene.toml", wet + sponge);
+  preprocess(folder_ / "scene.toml", folder_ / "case", false);
+  solver::CaseDescription c = solver::read_case((folder_ / "case").string());
+  ASSERT_EQ(c.sponges.size(), 1u);
+  EXPECT_EQ(c.sponges[0].x_start, 1.5);
+  EXPECT_EQ(c.sponges[0].x_end, 2.0);
+  EXPECT_NEAR(c.sponges[0].damping_rate / (solver::kDefaultSpongeStrength * std::sqrt(9.81)), 1.0,
+              0.02);
+  std::filesystem::remove_all(folder_ / "case");
+  // A rate given is kept; a zone may face -x.
+  testing::write_text(folder_ / "scene.toml",
+                      wet + "\n[[sponge]]\nx_start = 1.5\nx_end = 1.0\ndamping_rate = 5.0\n");
+  preprocess(folder_ / "scene.toml", folder_ / "case", false);
+  c = solver::read_case((folder_ / "case").string());
+  ASSERT_EQ(c.sponges.size(), 1u);
+  EXPECT_EQ(c.sponges[0].damping_rate, 5.0);
+  EXPECT_EQ(c.sponges[0].rate_at(1.0), 5.0);
+  EXPECT_EQ(c.sponges[0].rate_at(1.6), 0.0);
+  std::filesystem::remove_all(folder_ / "case");
+
+  auto scene = wet + replaced(sponge, "x_end = 2.0", "x_end = 1.5");
+  expect_error(scene, "scene.toml", line_of(scene, "x_end"), {"no length", "x_end"});
+  scene = wet + sponge + "damping_rate = -1.0\n";
+  expect_error(scene, "scene.toml", line_of(scene, "damping_rate"), {"damping_rate"});
+  scene = wet + sponge + "strength = 2.0\n";
+  expect_error(scene, "scene.toml", line_of(scene, "strength"), {"unknown key 'strength'"});
+  scene = wet + replaced(sponge, "x_start = 1.5\n", "");
+  expect_error(scene, "scene.toml", line_of(scene, "[[sponge]]"), {"x_start"});
+  // No water in the scene, or none in the zone.
+  scene = kScene + sponge;
+  expect_error(scene, "scene.toml", line_of(scene, "[[sponge]]"), {"no water"});
+  scene = wet + replaced(replaced(sponge, "1.5", "-3.0"), "2.0", "-2.0");
+  expect_error(scene, "scene.toml", line_of(scene, "x_start"), {"holds no water"});
+}
+
 }  // namespace
 }  // namespace lituya::pre

@@ -68,6 +68,7 @@ Simulation<dim> make_box_simulation(const BoxScene<dim>& scene) {
   description.materials = {scene.material};
   if (scene.with_water) description.materials.push_back(scene.water);
   description.solver = scene.solver;
+  description.sponges = scene.sponges;
   std::vector<NodalConstraint<dim>> constraints;
   const double tolerance = 1e-9 * scene.domain_size.maxCoeff();
   for (const auto& [side, bc] : scene.boundaries) {

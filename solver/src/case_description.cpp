@@ -1,5 +1,6 @@
 #include "lituya/solver/case_description.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -187,28 +188,138 @@ SolverSettings read_solver_settings(const TomlTable& t) {
     t.fail("'pressure_projection_interval' must be a number of steps in [0, 1000000] (0 = off)",
            "pressure_projection_interval");
   s.pressure_projection_interval = static_cast<int>(interval);
+  // Fractions of a minute are allowed: tests checkpoint a run of seconds.
+  s.checkpoint_interval_minutes =
+      t.number_in_or("checkpoint_interval_minutes", 0.0, 1e7, s.checkpoint_interval_minutes);
   t.finish();
   return s;
 }
 
+bool OutputSettings::writes(const std::vector<std::string>& fields,
+                            const std::string& field) const {
+  return std::find(fields.begin(), fields.end(), field) != fields.end();
+}
+
+namespace {
+// A field list of [output]: every name must be one the point set (or grid) has, once. The
+// message lists the known names, so a typo is fixed at once.
+std::vector<std::string> read_field_list(const TomlTable& t, const std::string& key,
+                                         const std::string& what,
+                                         const std::vector<std::string>& known) {
+  if (!t.has(key)) return known;
+  std::vector<std::string> fields = t.strings(key);
+  std::string list;
+  for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (std::find(known.begin(), known.end(), fields[i]) == known.end())
+      t.fail("unknown " + what + " field \"" + fields[i] + "\" in '" + key + "' (known: " + list +
+                 (what == "grid" ? "" : "; the point 'id' is always written") + ")",
+             key);
+    if (std::find(fields.begin(), fields.begin() + i, fields[i]) != fields.begin() + i)
+      t.fail("'" + key + "' lists \"" + fields[i] + "\" twice", key);
+  }
+  return fields;
+}
+}  // namespace
+
 OutputSettings read_output_settings(const TomlTable& t) {
   OutputSettings o;
-  const std::vector<std::string> allowed = o.point_fields;
-  if (t.has("point_fields")) {
-    o.point_fields = t.strings("point_fields");
-    for (const auto& f : o.point_fields) {
-      bool ok = false;
-      for (const auto& a : allowed) ok = ok || a == f;
-      if (!ok) {
-        std::string list;
-        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-        t.fail("unknown point field \"" + f + "\" (allowed: " + list + ")", "point_fields");
-      }
-    }
-  }
+  o.point_fields = read_field_list(t, "point_fields", "solid point", kSolidPointFields);
+  o.liquid_fields = read_field_list(t, "liquid_fields", "liquid point", kLiquidPointFields);
+  o.grid_fields = read_field_list(t, "grid_fields", "grid", kGridFields);
   o.grid = t.boolean_or("grid", true);
+  o.compress = t.choice_or("compression", {"zlib", "none"}, "zlib") == "zlib";
   t.finish();
   return o;
+}
+
+bool Probe::records(const std::string& field) const {
+  return std::find(fields.begin(), fields.end(), field) != fields.end();
+}
+
+Probe read_probe(const TomlTable& t, int dimension, bool has_water) {
+  Probe p;
+  p.name = t.safe_name("name");
+  const int given = static_cast<int>(t.has("position")) + static_cast<int>(t.has("solid_point")) +
+                    static_cast<int>(t.has("liquid_point"));
+  if (given != 1)
+    t.fail("probe '" + p.name +
+               "' needs exactly one of 'position' (a fixed place, m), 'solid_point' or "
+               "'liquid_point' (the id of a point, counting from 0, that the probe rides on)",
+           given == 0 ? "name" : (t.has("solid_point") ? "solid_point" : "liquid_point"));
+  if (t.has("position")) {
+    p.position = t.numbers("position");
+    if (static_cast<int>(p.position.size()) != dimension)
+      t.fail("'position' of probe '" + p.name + "' must have " + std::to_string(dimension) +
+                 " components (m)",
+             "position");
+    for (double x : p.position)
+      if (!std::isfinite(x))
+        t.fail("'position' of probe '" + p.name + "' is not finite", "position");
+  } else {
+    const char* key = t.has("solid_point") ? "solid_point" : "liquid_point";
+    p.follows = t.has("solid_point") ? Probe::Follows::kSolidPoint : Probe::Follows::kLiquidPoint;
+    p.point_id = t.integer(key);
+    if (p.point_id < 0)
+      t.fail(std::string("'") + key + "' is a point id, counting from 0 (ParaView's 'id' field)",
+             key);
+    if (p.follows == Probe::Follows::kLiquidPoint && !has_water)
+      t.fail("probe '" + p.name + "' rides on a liquid point, but the scene has no water", key);
+  }
+  if (t.has("fields")) {
+    p.fields = t.strings("fields");
+    std::string known;
+    for (const auto& f : kProbeFields) known += (known.empty() ? "" : ", ") + f;
+    if (p.fields.empty()) t.fail("'fields' of probe '" + p.name + "' is empty", "fields");
+    for (std::size_t i = 0; i < p.fields.size(); ++i) {
+      const std::string& f = p.fields[i];
+      if (std::find(kProbeFields.begin(), kProbeFields.end(), f) == kProbeFields.end())
+        t.fail("unknown probe field \"" + f + "\" (known: " + known + ")", "fields");
+      if (std::find(p.fields.begin(), p.fields.begin() + static_cast<std::ptrdiff_t>(i), f) !=
+          p.fields.begin() + static_cast<std::ptrdiff_t>(i))
+        t.fail("'fields' lists \"" + f + "\" twice", "fields");
+      if (!has_water && (f == "pore_pressure" || f == "liquid_velocity"))
+        t.fail("probe field \"" + f + "\" needs water, and the scene has none", "fields");
+    }
+  } else if (!has_water) {
+    p.fields = {"effective_stress", "velocity", "porosity"};
+  }
+  p.interval = t.number_in_or("interval", 1e-12, 1e9, 0.0);
+  t.finish();
+  return p;
+}
+
+double Sponge::rate_at(double x) const {
+  // Position in the zone, 0 at x_start and 1 at x_end, whichever way the zone faces.
+  const double s = std::clamp((x - x_start) / (x_end - x_start), 0.0, 1.0);
+  return damping_rate * s * s;
+}
+
+Sponge read_sponge(const TomlTable& t, bool rate_required) {
+  Sponge s;
+  s.x_start = t.number("x_start");
+  s.x_end = t.number("x_end");
+  if (!(s.x_end != s.x_start))
+    t.fail(
+        "the sponge zone has no length: 'x_end' must differ from 'x_start' (x_end is the far "
+        "end of the tank, where the damping is strongest; it may lie below x_start for a "
+        "sponge at the -x end)",
+        "x_end");
+  if (rate_required && !t.has("damping_rate")) t.fail("the [[sponge]] has no 'damping_rate' (1/s)");
+  // Above 1e6 1/s the zone is a wall for any wave a tank carries; a bound catches a unit slip.
+  s.damping_rate = t.number_in_or("damping_rate", 1e-9, 1e6, 0.0);
+  t.finish();
+  return s;
+}
+
+void check_probe_names(const std::vector<Probe>& probes,
+                       const std::vector<TomlTable>& probe_tables) {
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < probes.size(); ++i)
+    if (!names.insert(probes[i].name).second)
+      probe_tables[i].fail("two [[probe]] entries are named '" + probes[i].name +
+                               "' (each writes output/probes/<name>.csv)",
+                           "name");
 }
 
 toml::table to_toml(const Material& m) {
@@ -276,7 +387,8 @@ toml::table to_toml(const SolverSettings& s) {
 
                 {"max_velocity", s.max_velocity},
                 {"volumetric_smoothing", s.volumetric_smoothing},
-                {"pressure_projection_interval", s.pressure_projection_interval}};
+                {"pressure_projection_interval", s.pressure_projection_interval},
+                {"checkpoint_interval_minutes", s.checkpoint_interval_minutes}};
   // Only the blend settings the scene gave: absent ones keep their automatic defaults.
   if (s.flip_fraction) t.insert("flip_fraction", *s.flip_fraction);
   if (s.pic_damping_time) t.insert("pic_damping_time", *s.pic_damping_time);
@@ -285,7 +397,30 @@ toml::table to_toml(const SolverSettings& s) {
 }
 
 toml::table to_toml(const OutputSettings& o) {
-  return toml::table{{"point_fields", to_array(o.point_fields)}, {"grid", o.grid}};
+  return toml::table{{"point_fields", to_array(o.point_fields)},
+                     {"liquid_fields", to_array(o.liquid_fields)},
+                     {"grid_fields", to_array(o.grid_fields)},
+                     {"grid", o.grid},
+                     {"compression", o.compress ? "zlib" : "none"}};
+}
+
+toml::table to_toml(const Probe& p) {
+  toml::table t{{"name", p.name}};
+  if (p.follows == Probe::Follows::kPosition) {
+    toml::array a;
+    for (double x : p.position) a.push_back(x);
+    t.insert("position", a);
+  } else {
+    t.insert(p.follows == Probe::Follows::kSolidPoint ? "solid_point" : "liquid_point",
+             static_cast<int64_t>(p.point_id));
+  }
+  t.insert("fields", to_array(p.fields));
+  if (p.interval > 0) t.insert("interval", p.interval);
+  return t;
+}
+
+toml::table to_toml(const Sponge& s) {
+  return toml::table{{"x_start", s.x_start}, {"x_end", s.x_end}, {"damping_rate", s.damping_rate}};
 }
 
 void check_stage_boundaries(const std::vector<Stage>& stages,
@@ -349,6 +484,15 @@ CaseDescription read_case(const std::string& case_folder) {
   for (const TomlTable& s : stage_tables) c.stages.push_back(read_stage(s));
   if (c.stages.empty()) root.fail("no [[stage]] given: nothing to run");
   check_stage_boundaries(c.stages, c.boundaries, stage_tables);
+  const std::vector<TomlTable> probe_tables = root.tables("probe");
+  for (const TomlTable& p : probe_tables)
+    c.probes.push_back(read_probe(p, c.dimension, !c.liquid_points_file.empty()));
+  check_probe_names(c.probes, probe_tables);
+  for (const TomlTable& s : root.tables("sponge")) {
+    if (c.liquid_points_file.empty())
+      s.fail("a [[sponge]] damps water, and this case has none (no liquid_points)");
+    c.sponges.push_back(read_sponge(s, true));
+  }
   root.finish();
 
   TomlDocument mdoc(c.materials_file);

@@ -14,7 +14,6 @@
 
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/process_memory.hpp"
-#include "lituya/common/stop_request.hpp"
 #include "simulation_kernels.hpp"
 
 namespace lituya::solver {
@@ -59,6 +58,7 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
       continue;
     }
     data.solid_density = m.solid_density;
+    data.dry_density = m.dry_density();
     data.max_porosity = m.max_porosity;
     data.grain_diameter = m.grain_diameter;
     data.elastic = ElasticConstants::from_young_poisson(m.youngs_modulus, m.poisson_ratio);
@@ -257,6 +257,15 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
     Voigt6& sigma = points.stress[p];
     rotate_stress(sigma, l, dt);
     const MaterialModelData& material = materials_[points.material[p]];
+    // The constitutive update acts on the Kirchhoff stress tau = J sigma, J = V / V_0 the
+    // point's volume over its volume at the material's dry density (scientific manual, 4.3).
+    // Its force -V sigma . grad N = -V_0 tau . grad N then does not grow with the point's
+    // dilation, and its P-wave speed stays the c_p of the time step at any density; with the
+    // rate of the Cauchy stress, a point dilated 40-fold at a thin front (grains parted at
+    // the tension apex) was recompressed with the dense soil's stiffness times its inflated
+    // volume, and threw the points sharing its nearly empty nodes (issue 8).
+    const double reference_volume = points.mass[p] / material.dry_density;
+    sigma *= points.volume[p] / reference_volume;
     if (material.max_porosity < 1.0 && porosity(p) >= material.max_porosity)
       sigma.setZero();  // n > n_max: grains separated, no effective stress (section 2.3)
     else if (material.model == MaterialModel::kMohrCoulomb)
@@ -264,6 +273,7 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
     else
       elastic_update(material.elastic, sigma, strain);
     points.volume[p] *= 1.0 + strain(0) + strain(1) + strain(2);
+    sigma *= reference_volume / points.volume[p];
 
     const double speed = points.velocity[p].norm();
     const PointFault kind = relocate(solid_, mesh_, p, speed, sigma.allFinite(), max_velocity_);
@@ -312,15 +322,21 @@ void Simulation<dim>::step(double dt, double damping) {
 
 template <int dim>
 void Simulation<dim>::map_to_grid() {
+  // Into arrays of their own: the nodal velocities of the last step carry into the next one
+  // (the drag of eq. 23 uses the previous relative velocity), so writing grid output must not
+  // overwrite them, or a run with grid output would differ from one without.
+  const std::size_t n_nodes = mesh_.node_count();
   points_to_nodes(Transfer::kMassMomentumForce);
   const detail::PhaseSums<dim>& solid = solid_.nodal.sums();
-  for (std::size_t i = 0; i < mesh_.node_count(); ++i)
-    solid_.node_velocity[i] = velocity_from_momentum(solid.momentum[i], solid.mass[i]);
+  grid_velocity_.resize(n_nodes);
+  for (std::size_t i = 0; i < n_nodes; ++i)
+    grid_velocity_[i] = velocity_from_momentum(solid.momentum[i], solid.mass[i]);
   if (has_liquid_) {
     liquid_to_nodes(Transfer::kMassMomentumForce);
     const detail::LiquidSums<dim>& liquid = water_.nodal.sums();
-    for (std::size_t i = 0; i < mesh_.node_count(); ++i)
-      water_.node_velocity[i] = velocity_from_momentum(liquid.momentum[i], liquid.mass[i]);
+    grid_liquid_velocity_.resize(n_nodes);
+    for (std::size_t i = 0; i < n_nodes; ++i)
+      grid_liquid_velocity_[i] = velocity_from_momentum(liquid.momentum[i], liquid.mass[i]);
   }
 }
 
@@ -377,59 +393,70 @@ void Simulation<dim>::report_progress(const Stage& stage, double t, double wall,
 }
 
 template <int dim>
-StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback& on_output) {
+StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback& on_output,
+                                       const StepCallback& after_step,
+                                       const StageProgress* resume) {
   activate_boundaries(stage.boundaries);
   StageReport report;
   report.stage = stage.name;
   const double start_wall = wall_seconds();
   const bool quasi_static = stage.type == StageType::kQuasiStatic;
-  double t = 0;
-  int output_index = 0;
-  if (on_output) on_output(stage, t, output_index++);
-  // An output interval longer than the stage still ends the stage with its final state.
-  double next_output =
-      std::min(stage.output_interval > 0 ? stage.output_interval : stage.duration, stage.duration);
-  double max_kinetic_energy = 0;
-  stage_steps_ = 0;
+  // Everything the loop carries from one step to the next, so that a checkpoint taken after any
+  // step continues the stage as if it had never stopped.
+  StageProgress at;
+  if (resume) {
+    at = *resume;
+  } else {
+    if (on_output) on_output(stage, at.time, at.next_output_index++);
+    // An output interval longer than the stage still ends the stage with its final state.
+    at.next_output_time = std::min(
+        stage.output_interval > 0 ? stage.output_interval : stage.duration, stage.duration);
+  }
+  double& t = at.time;
+  stage_steps_ = at.steps;
   report.stop_reason = "duration reached";
   const double time_tolerance = 1e-9 * stage.duration;
   while (t < stage.duration - time_tolerance) {
     // The Courant-limited step, shortened to land exactly on output times.
     double dt = stage.courant * next_time_step_;
-    dt = std::min(dt, next_output - t);
+    dt = std::min(dt, at.next_output_time - t);
     last_dt_ = dt;
     stage_time_ = t + dt;  // the load at the end of the step: a ramp reaches 1 at ramp_time
     step(dt, stage.damping);
     t += dt;
-    ++stage_steps_;
-    bool output_now = t >= next_output - time_tolerance;
-    // SIGINT/SIGTERM (stop_request.hpp): write this step's state now; solve.cpp's output
-    // callback then ends the run with it as the last output.
-    if (stop_requested()) output_now = true;
+    at.steps = ++stage_steps_;
+    const bool output_now = t >= at.next_output_time - time_tolerance;
     if (quasi_static && stage.kinetic_energy_ratio > 0) {
       const double e = kinetic_energy();
-      max_kinetic_energy = std::max(max_kinetic_energy, e);
-      if (stage_steps_ > 100 && e <= stage.kinetic_energy_ratio * max_kinetic_energy) {
+      at.max_kinetic_energy = std::max(at.max_kinetic_energy, e);
+      if (stage_steps_ > 100 && e <= stage.kinetic_energy_ratio * at.max_kinetic_energy) {
         std::ostringstream reason;
-        reason << "kinetic energy ratio " << e / max_kinetic_energy << " below "
+        reason << "kinetic energy ratio " << e / at.max_kinetic_energy << " below "
                << stage.kinetic_energy_ratio;
         report.stop_reason = reason.str();
-        output_now = true;
-        if (on_output) on_output(stage, t, output_index++);
+        if (on_output) on_output(stage, t, at.next_output_index++);
         break;
       }
     }
     if (output_now) {
-      if (on_output) on_output(stage, t, output_index++);
-      next_output = std::min(
-          next_output + (stage.output_interval > 0 ? stage.output_interval : stage.duration),
-          stage.duration);
+      if (on_output) on_output(stage, t, at.next_output_index++);
+      at.next_output_time =
+          std::min(at.next_output_time +
+                       (stage.output_interval > 0 ? stage.output_interval : stage.duration),
+                   stage.duration);
     }
-    report_progress(stage, t, wall_seconds() - start_wall, false);
+    report_progress(stage, t, at.wall_time + wall_seconds() - start_wall, false);
+    // A stop asked for by SIGINT/SIGTERM is acted on here too (solve.cpp): the state is whole
+    // after the step.
+    if (after_step) {
+      StageProgress now = at;
+      now.wall_time += wall_seconds() - start_wall;
+      after_step(stage, now);
+    }
   }
   report.steps = stage_steps_;
   report.simulated_time = t;
-  report.wall_time = wall_seconds() - start_wall;
+  report.wall_time = at.wall_time + wall_seconds() - start_wall;
   report.point_steps_per_second =
       report.wall_time > 0 ? static_cast<double>(point_count()) * stage_steps_ / report.wall_time
                            : 0;

@@ -109,6 +109,15 @@ void Simulation<dim>::setup_liquid() {
     for (int node : mesh_.cell_nodes[c])
       node_mesh_volume_[node] += mesh_.cell_volume[c] / (dim + 1);
   liquid_flux_divergence_.assign(liquid.size(), 0.0);
+  // Sponge zones: sigma at each node once, the strongest zone where two overlap. A node is
+  // damped by its own position; the water in a cell sees the linear blend of its nodes.
+  if (!description_.sponges.empty()) {
+    node_sponge_rate_.assign(n_nodes, 0.0);
+    for (std::size_t i = 0; i < n_nodes; ++i)
+      for (const Sponge& sponge : description_.sponges)
+        node_sponge_rate_[i] =
+            std::max(node_sponge_rate_[i], sponge.rate_at(mesh_.node_position[i](0)));
+  }
   locate_all<dim>(mesh_, liquid.position, liquid.cell, liquid.id, water_.shape,
                   description_.liquid_points_file, "liquid point");
 }
@@ -169,12 +178,22 @@ void Simulation<dim>::liquid_to_nodes(Transfer what) {
       });
 
   // Pass 3: the pore pressure on the grain volume of the solid points, with the pressure
-  // interpolated from its volume-weighted nodal average.
+  // interpolated from its nodal value: the water's volume-weighted pressure spread over the
+  // node's pore volume n V_i. Where the pores are full the two agree. Where the water only
+  // touches the node (one liquid point at the far corner of a cell, N ~ 0.01) the average
+  // alone would still be that point's full pressure, and at a slide's first contact that is a
+  // water-hammer spike (rho_w c_w v, 100 times hydrostatic) that every grain point of the
+  // cells around the node would feel (verification/extremes/impact/README.md). Read as
+  // Bishop's effective stress with chi = S_r, the degree of saturation W / (n V_i): a node
+  // whose pores the water only partly fills passes that fraction of the pressure to the grains.
   const LiquidSums<dim>& sums = water_.nodal.sums();
 #pragma omp parallel for num_threads(threads_) schedule(static)
-  for (std::size_t i = 0; i < n_nodes; ++i)
-    node_pressure_[i] =
-        sums.water_volume[i] > 0 ? sums.water_volume_pressure[i] / sums.water_volume[i] : 0.0;
+  for (std::size_t i = 0; i < n_nodes; ++i) {
+    const double pore_volume = node_porosity_[i] * node_mesh_volume_[i];
+    node_pressure_[i] = sums.water_volume[i] > 0 ? sums.water_volume_pressure[i] /
+                                                       std::max(sums.water_volume[i], pore_volume)
+                                                 : 0.0;
+  }
   coupling_.run(
       points.size(), [](CouplingSums& c) { return std::tie(c.grain_pressure_force); },
       [&](CouplingSums& c, std::size_t p) {
@@ -220,6 +239,10 @@ void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
       vs = ((mw + a) * ps + a * pw) / det;
       vw = (a * ps + (ms + a) * pw) / det;
     }
+    // Sponge zone: dv/dt = -sigma v for the water, integrated implicitly (backward Euler), so
+    // any sigma dt is stable and the water comes to rest, never reverses. sigma = 0 divides
+    // by exactly 1: water outside the zones is untouched to the last bit.
+    if (has_liquid && !node_sponge_rate_.empty()) vw /= 1.0 + dt * node_sponge_rate_[i];
     // Where one phase is absent its velocity is taken as the other's, so the mixture flux
     // of eq. (8) and the relative velocity of eq. (23) see no phantom motion.
     if (!has_liquid) vw = vs;

@@ -106,6 +106,100 @@ bool is_sweep_file(const fs::path& file) {
   }
 }
 
+namespace {
+
+std::string values_text(size_t n) {
+  return std::to_string(n) + (n == 1 ? " value" : " values");
+}
+
+}  // namespace
+
+std::string combination_name(Combination combination) {
+  return combination == Combination::kZip ? "zip" : "grid";
+}
+
+std::vector<std::vector<size_t>> combinations(const SweepDefinition& d) {
+  const std::string where = d.source.empty() ? "--parameter" : d.source.string();
+  auto fail = [&](int line, const std::string& message) { throw InputError(where, line, message); };
+  if (d.parameters.empty()) fail(0, "no parameter to sweep");
+  for (size_t p = 0; p < d.parameters.size(); ++p) {
+    const SweepParameter& parameter = d.parameters[p];
+    if (parameter.values.empty())
+      fail(parameter.line, "'" + parameter.key + "' has no values to sweep");
+    for (size_t q = 0; q < p; ++q)
+      if (d.parameters[q].key == parameter.key)
+        fail(parameter.line,
+             "'" + parameter.key + "' is given twice" +
+                 (d.parameters[q].line > 0
+                      ? " (first at line " + std::to_string(d.parameters[q].line) + ")"
+                      : std::string()));
+  }
+  std::vector<std::vector<size_t>> runs;
+  if (d.combination == Combination::kZip) {
+    const SweepParameter& first = d.parameters.front();
+    for (const SweepParameter& parameter : d.parameters)
+      if (parameter.values.size() != first.values.size())
+        fail(parameter.line, (d.source.empty() ? "--combine zip" : "combine = \"zip\"") +
+                                 std::string(" pairs the i-th values of every key, but '") +
+                                 parameter.key + "' has " + values_text(parameter.values.size()) +
+                                 " and '" + first.key + "' has " +
+                                 values_text(first.values.size()) + " (" +
+                                 (d.source.empty() ? "--combine grid" : "combine = \"grid\"") +
+                                 " makes every combination)");
+    for (size_t i = 0; i < first.values.size(); ++i) runs.emplace_back(d.parameters.size(), i);
+    return runs;
+  }
+  double count = 1;
+  for (const SweepParameter& parameter : d.parameters)
+    count *= static_cast<double>(parameter.values.size());
+  if (count > static_cast<double>(kMaxRuns)) {
+    std::string sizes;
+    for (const SweepParameter& parameter : d.parameters)
+      sizes += (sizes.empty() ? "" : " x ") + std::to_string(parameter.values.size());
+    fail(d.parameters.back().line, "the grid of every combination has " + sizes + " = " +
+                                       range_value(count) + " runs, more than " +
+                                       std::to_string(kMaxRuns));
+  }
+  // The first key varies slowest, as nested loops written in the order of the keys.
+  std::vector<size_t> index(d.parameters.size(), 0);
+  for (;;) {
+    runs.push_back(index);
+    size_t p = d.parameters.size();
+    while (p > 0) {
+      --p;
+      if (++index[p] < d.parameters[p].values.size()) break;
+      index[p] = 0;
+      if (p == 0) return runs;
+    }
+  }
+}
+
+namespace {
+
+// The values of a sweep file's `values` array (numbers, strings or booleans) as text.
+std::vector<std::string> read_values(const TomlTable& table, const toml::node* node) {
+  const toml::array* values = node ? node->as_array() : nullptr;
+  if (!values || values->empty())
+    table.fail("'values' must be a non-empty array of numbers, strings or booleans", "values");
+  std::vector<std::string> out;
+  for (const toml::node& v : *values) {
+    if (auto i = v.value_exact<int64_t>())
+      out.push_back(std::to_string(*i));
+    else if (auto x = v.value_exact<double>())
+      out.push_back(shortest(*x));
+    else if (auto b = v.value_exact<bool>())
+      out.push_back(*b ? "true" : "false");
+    else if (auto str = v.value_exact<std::string>())
+      out.push_back(*str);
+    else
+      table.fail("'values' must hold numbers, strings or booleans only", "values");
+  }
+  if (out.size() > kMaxValues) table.fail("'values' holds more than 1000 values", "values");
+  return out;
+}
+
+}  // namespace
+
 SweepDefinition read_sweep_file(const fs::path& file) {
   const TomlDocument document(file);
   const TomlTable root = document.root();
@@ -114,29 +208,47 @@ SweepDefinition read_sweep_file(const fs::path& file) {
   d.source = file;
   const fs::path folder = file.parent_path();
   d.scene = folder / root.string("scene");
-  d.parameter = root.string("parameter");
-  if (!root.has("values")) root.fail("missing required key 'values' (the values of the parameter)");
   // The values may be numbers, strings or booleans: read them from the raw table.
   const toml::table raw = toml::parse_file(file.string());
-  const toml::array* values = raw.get_as<toml::array>("values");
-  if (!values || values->empty())
-    root.fail("'values' must be a non-empty array of numbers, strings or booleans", "values");
-  for (const toml::node& v : *values) {
-    if (auto i = v.value_exact<int64_t>())
-      d.values.push_back(std::to_string(*i));
-    else if (auto x = v.value_exact<double>())
-      d.values.push_back(shortest(*x));
-    else if (auto b = v.value_exact<bool>())
-      d.values.push_back(*b ? "true" : "false");
-    else if (auto s = v.value_exact<std::string>())
-      d.values.push_back(*s);
-    else
-      root.fail("'values' must hold numbers, strings or booleans only", "values");
+  const toml::node* parameter = raw.get("parameter");
+  if (!parameter)
+    root.fail(
+        "missing required key 'parameter' (the key to vary, or one [[parameter]] entry per key)");
+  if (parameter->is_string()) {
+    SweepParameter p;
+    p.key = root.string("parameter");
+    p.line = root.line_of("parameter");
+    if (!root.has("values"))
+      root.fail("missing required key 'values' (the values of the parameter)");
+    p.values = read_values(root, raw.get("values"));
+    d.parameters.push_back(p);
+  } else if (parameter->is_array_of_tables()) {
+    if (root.has("values"))
+      root.fail("'values' belongs in each [[parameter]] entry, next to its 'key'", "values");
+    const std::vector<TomlTable> entries = root.tables("parameter");
+    const toml::array& raw_entries = *parameter->as_array();
+    for (size_t i = 0; i < entries.size(); ++i) {
+      SweepParameter p;
+      p.key = entries[i].string("key");
+      p.line = entries[i].line();
+      if (!entries[i].has("values"))
+        entries[i].fail("missing required key 'values' (the values of '" + p.key + "')");
+      p.values = read_values(entries[i], raw_entries[i].as_table()->get("values"));
+      entries[i].finish();
+      d.parameters.push_back(p);
+    }
+  } else {
+    root.fail(
+        "'parameter' must be a key (parameter = \"material.sand.friction_angle\") or "
+        "[[parameter]] entries with 'key' and 'values'",
+        "parameter");
   }
-  if (d.values.size() > kMaxValues) root.fail("'values' holds more than 1000 values", "values");
+  d.combination = root.choice_or("combine", {"grid", "zip"}, "grid") == "zip" ? Combination::kZip
+                                                                              : Combination::kGrid;
   d.measures = root.strings_or("measures", {});
   if (root.has("output")) d.output = folder / root.string("output");
   root.finish();
+  combinations(d);  // zip lengths, repeated keys and the number of runs, at their lines
   return d;
 }
 
@@ -147,28 +259,42 @@ fs::path default_output(const SweepDefinition& d) {
     out.replace_extension();
     return out;
   }
-  return d.scene.parent_path() / ("sweep_" + d.parameter);
+  std::string keys;
+  for (const SweepParameter& p : d.parameters) keys += (keys.empty() ? "" : "+") + p.key;
+  return d.scene.parent_path() / ("sweep_" + keys);
 }
 
-std::string sweep_file_text(const SweepDefinition& d, const std::vector<std::string>& literals,
+std::string sweep_file_text(const SweepDefinition& d,
+                            const std::vector<std::vector<std::string>>& literals,
                             const std::vector<std::string>& measure_names) {
   auto quoted = [](const std::string& s) {
     std::ostringstream q;
     q << toml::value<std::string>(s);
     return q.str();
   };
+  auto list = [](const std::vector<std::string>& items) {
+    std::string text = "[";
+    for (size_t i = 0; i < items.size(); ++i) text += (i ? ", " : "") + items[i];
+    return text + "]";
+  };
   std::string text =
       "# Written by `lituya sweep`. Run the same sweep again with: lituya sweep <this file> -o "
       "DIR\n"
       "format = \"lituya-sweep\"\nversion = 1\n";
   text += "scene = " + quoted(fs::absolute(d.scene).lexically_normal().string()) + "\n";
-  text += "parameter = " + quoted(d.parameter) + "\n";
-  text += "values = [";
-  for (size_t i = 0; i < literals.size(); ++i) text += (i ? ", " : "") + literals[i];
-  text += "]\nmeasures = [";
-  for (size_t i = 0; i < measure_names.size(); ++i)
-    text += (i ? ", " : "") + quoted(measure_names[i]);
-  text += "]\n";
+  std::vector<std::string> measures;
+  for (const std::string& m : measure_names) measures.push_back(quoted(m));
+  if (d.parameters.size() == 1) {
+    text += "parameter = " + quoted(d.parameters[0].key) + "\n";
+    text += "values = " + list(literals.at(0)) + "\n";
+    text += "measures = " + list(measures) + "\n";
+    return text;
+  }
+  text += "combine = " + quoted(combination_name(d.combination)) + "\n";
+  text += "measures = " + list(measures) + "\n";
+  for (size_t p = 0; p < d.parameters.size(); ++p)
+    text += "\n[[parameter]]\nkey = " + quoted(d.parameters[p].key) +
+            "\nvalues = " + list(literals.at(p)) + "\n";
   return text;
 }
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "lituya/common/csv_writer.hpp"
 #include "lituya/common/input_error.hpp"
 
 namespace lituya::sweep {
@@ -175,7 +176,8 @@ CsvTable read_csv(const std::filesystem::path& file) {
     line = trim(line);
     if (line.empty() || line[0] == '#') continue;
     if (!header) {
-      for (const std::string& f : split(line)) table.header.push_back(trim(f, " \t\""));
+      // The header as the CSV writer quotes it (a gauge name may hold a comma).
+      for (const std::string& f : csv_split(line)) table.header.push_back(trim(f));
       header = true;
       continue;
     }

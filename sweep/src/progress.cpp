@@ -31,8 +31,12 @@ std::string progress_bar(int done, int total, int width) {
   return bar;
 }
 
-SweepProgress::SweepProgress(std::ostream* out, bool terminal, int total)
-    : out_(out), terminal_(terminal), total_(total), start_(Clock::now()) {}
+SweepProgress::SweepProgress(std::ostream* out, bool terminal, int total, int jobs)
+    : out_(out),
+      terminal_(terminal),
+      total_(total),
+      jobs_(std::max(1, jobs)),
+      start_(Clock::now()) {}
 
 double SweepProgress::since(Clock::time_point t) const {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -41,13 +45,15 @@ double SweepProgress::since(Clock::time_point t) const {
 std::string SweepProgress::line() const {
   std::string line = "sweep " + progress_bar(done_, total_) + " " + std::to_string(done_) + "/" +
                      std::to_string(total_) + " runs";
-  if (running_) line += "  " + label_;
+  for (size_t r = 0; r < running_.size(); ++r) line += (r == 0 ? "  " : " | ") + running_[r].label;
   line += "  elapsed " + format_duration(since(start_));
-  // The mean time of the runs done so far, for this one and the rest.
+  // The mean time of the runs done so far, for the ones going and the rest, shared among the
+  // jobs; the time the runs going have had already is taken off.
   if (timed_runs_ > 0 && done_ < total_) {
     const double mean = timed_seconds_ / timed_runs_;
-    const double current = running_ ? std::min(since(run_start_), mean) : 0;
-    line += "  eta " + format_duration(mean * (total_ - done_) - current);
+    double current = 0;
+    for (const Running& r : running_) current += std::min(since(r.start), mean);
+    line += "  eta " + format_duration((mean * (total_ - done_) - current) / jobs_);
   }
   return line;
 }
@@ -67,19 +73,20 @@ void SweepProgress::draw() {
 }
 
 void SweepProgress::start_run(const std::string& label) {
-  label_ = label;
-  running_ = true;
-  run_start_ = Clock::now();
+  running_.push_back({label, Clock::now()});
   draw();
 }
 
 void SweepProgress::tick() {
-  if (terminal_ && running_ && since(last_draw_) >= 1.0) draw();
+  if (terminal_ && !running_.empty() && since(last_draw_) >= 1.0) draw();
 }
 
-void SweepProgress::end_run(const std::string& result, double wall_time, bool timed) {
+void SweepProgress::end_run(const std::string& label, const std::string& result, double wall_time,
+                            bool timed) {
   ++done_;
-  running_ = false;
+  const auto run = std::find_if(running_.begin(), running_.end(),
+                                [&](const Running& r) { return r.label == label; });
+  if (run != running_.end()) running_.erase(run);
   if (timed) {
     timed_seconds_ += wall_time;
     ++timed_runs_;
@@ -97,7 +104,7 @@ void SweepProgress::end_run(const std::string& result, double wall_time, bool ti
 
 void SweepProgress::finish() {
   if (!out_) return;
-  running_ = false;
+  running_.clear();
   if (terminal_) {
     draw();
     *out_ << "\n" << std::flush;

@@ -431,10 +431,19 @@ std::vector<std::string> SceneText::literals(const KeyTarget& target,
 
 std::string SceneText::with_value(const KeyTarget& target, const std::string& literal,
                                   const std::vector<std::string>& note) const {
+  return with_values({{target, literal}}, note);
+}
+
+std::string SceneText::with_values(const std::vector<KeySetting>& settings,
+                                   const std::vector<std::string>& note) const {
   std::vector<Edit> edits;
-  // The file references, made absolute (unless the swept key is one of them).
+  auto swept = [&](const std::string& key) {
+    return std::any_of(settings.begin(), settings.end(),
+                       [&](const KeySetting& s) { return s.target.key == key; });
+  };
+  // The file references, made absolute (unless a swept key is one of them).
   for (const char* file_key : {"mesh.geometry", "post.reference", "post.gauge_reference"}) {
-    if (target.key == file_key) continue;
+    if (swept(file_key)) continue;
     const std::vector<std::string> parts = split_key(file_key);
     const auto* table = table_.get_as<toml::table>(parts[0]);
     const auto* value = table ? table->get_as<std::string>(parts[1]) : nullptr;
@@ -445,32 +454,47 @@ std::string SceneText::with_value(const KeyTarget& target, const std::string& li
                      basic_string(absolute)});
   }
   const std::string file = file_.string();
-  auto fail = [&](int line, const std::string& message) -> void {
-    throw InputError(file, line, message);
-  };
-  const Walk w = walk(table_, target.key, fail);
-  if (w.value) {
-    edits.push_back({offset_of(text_, w.value->source().begin),
-                     offset_of(text_, w.value->source().end), literal});
-  } else if (w.create_table) {
-    // A new table at the end of the file, where a table header is always allowed.
-    const std::vector<std::string> parts = split_key(target.key);
-    std::string block = (text_.empty() || text_.back() == '\n') ? "" : "\n";
-    block += "\n[" + parts[0] + "]\n" + parts[1] + " = " + literal + "\n";
-    edits.push_back({text_.size(), text_.size(), block});
-  } else if (w.parent == &table_) {
-    edits.push_back({0, 0, target.leaf + " = " + literal + "\n"});
-  } else {
-    if (w.parent->is_inline())
-      fail(target.line, "'" + target.key + "': the scene does not set '" + target.leaf +
-                            "' and it cannot be added to an inline table; write it in the scene");
-    const size_t at = after_line(text_, w.parent->source().begin.line);
-    std::string line = target.leaf + " = " + literal + "\n";
-    if (at == text_.size() && !text_.empty() && text_.back() != '\n') line = "\n" + line;
-    edits.push_back({at, at, line});
+  // Keys of tables the scene does not have, per table in the order given: each new table is
+  // written once (a second [solver] header would not parse).
+  std::vector<std::pair<std::string, std::string>> new_tables;
+  for (const auto& [target, literal] : settings) {
+    auto fail = [&](int line, const std::string& message) -> void {
+      throw InputError(file, line, message);
+    };
+    const Walk w = walk(table_, target.key, fail);
+    if (w.value) {
+      edits.push_back({offset_of(text_, w.value->source().begin),
+                       offset_of(text_, w.value->source().end), literal});
+    } else if (w.create_table) {
+      const std::vector<std::string> parts = split_key(target.key);
+      auto table = std::find_if(new_tables.begin(), new_tables.end(),
+                                [&](const auto& t) { return t.first == parts[0]; });
+      if (table == new_tables.end())
+        table = new_tables.insert(new_tables.end(), {parts[0], "\n[" + parts[0] + "]\n"});
+      table->second += parts[1] + " = " + literal + "\n";
+    } else if (w.parent == &table_) {
+      edits.push_back({0, 0, target.leaf + " = " + literal + "\n"});
+    } else {
+      if (w.parent->is_inline())
+        fail(target.line, "'" + target.key + "': the scene does not set '" + target.leaf +
+                              "' and it cannot be added to an inline table; write it in the scene");
+      const size_t at = after_line(text_, w.parent->source().begin.line);
+      std::string line = target.leaf + " = " + literal + "\n";
+      if (at == text_.size() && !text_.empty() && text_.back() != '\n') line = "\n" + line;
+      edits.push_back({at, at, line});
+    }
   }
-  std::sort(edits.begin(), edits.end(),
-            [](const Edit& a, const Edit& b) { return a.begin > b.begin; });
+  // New tables at the end of the file, where a table header is always allowed.
+  if (!new_tables.empty()) {
+    std::string block = (text_.empty() || text_.back() == '\n') ? "" : "\n";
+    for (const auto& table : new_tables) block += table.second;
+    edits.push_back({text_.size(), text_.size(), block});
+  }
+  // From the end, so that earlier offsets stay valid. Of two lines inserted at the same place
+  // the later one goes in first, so that the copy lists them in the order given.
+  std::reverse(edits.begin(), edits.end());
+  std::stable_sort(edits.begin(), edits.end(),
+                   [](const Edit& a, const Edit& b) { return a.begin > b.begin; });
   std::string copy = text_;
   for (const Edit& e : edits) copy.replace(e.begin, e.end - e.begin, e.replacement);
   if (!note.empty()) {
@@ -479,15 +503,18 @@ std::string SceneText::with_value(const KeyTarget& target, const std::string& li
     for (const std::string& line : note) copy += "# " + line + "\n";
   }
 
-  // The copy must parse and hold the value where the key says.
-  const std::string placed = value_in(copy, target.key);
-  const auto expected = parse_value(literal);
-  const auto got = placed.empty() ? std::nullopt : parse_value(placed);
-  if (!expected || !got || !(*expected == *got))
-    fail(target.line, "'" + target.key + "' = " + literal +
-                          " could not be written into a copy of the scene (the scene does not "
-                          "set it, and where it would go is ambiguous); write '" +
-                          target.leaf + "' into the scene and sweep again");
+  // The copy must parse and hold each value where its key says.
+  for (const auto& [target, literal] : settings) {
+    const std::string placed = value_in(copy, target.key);
+    const auto expected = parse_value(literal);
+    const auto got = placed.empty() ? std::nullopt : parse_value(placed);
+    if (!expected || !got || !(*expected == *got))
+      throw InputError(file, target.line,
+                       "'" + target.key + "' = " + literal +
+                           " could not be written into a copy of the scene (the scene does not "
+                           "set it, and where it would go is ambiguous); write '" +
+                           target.leaf + "' into the scene and sweep again");
+  }
   return copy;
 }
 

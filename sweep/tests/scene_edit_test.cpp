@@ -166,6 +166,30 @@ TEST(SceneEdit, AddsAKeyTheSceneDoesNotSet) {
   EXPECT_EQ(SceneText::value_in(with_solver, "post.track_materials.0"), "\"beads\"");
 }
 
+// A sweep of several keys sets them all in one copy: values replaced in place, keys added to
+// an existing table, and keys of a table the scene does not have under one new header (two
+// [solver] headers would not parse).
+TEST(SceneEdit, SetsSeveralKeysInOneCopy) {
+  const SceneText scene(write_scene("several"));
+  const KeyTarget cell = scene.locate("mesh.cell_size");
+  const KeyTarget courant = scene.locate("stage.gravity.courant");
+  const KeyTarget flip = scene.locate("solver.flip_fraction");
+  const KeyTarget damping = scene.locate("solver.damping");
+  const std::string copy = scene.with_values(
+      {{cell, "0.02"}, {courant, "0.25"}, {flip, "0.9"}, {damping, "0.1"}}, {"a note"});
+  EXPECT_EQ(SceneText::value_in(copy, "mesh.cell_size"), "0.02");
+  EXPECT_EQ(SceneText::value_in(copy, "stage.gravity.courant"), "0.25");
+  EXPECT_EQ(SceneText::value_in(copy, "solver.flip_fraction"), "0.9");
+  EXPECT_EQ(SceneText::value_in(copy, "solver.damping"), "0.1");
+  EXPECT_EQ(SceneText::value_in(copy, "stage.release.courant"), "0.5");
+  const size_t header = copy.find("[solver]\nflip_fraction = 0.9\ndamping = 0.1\n");
+  EXPECT_NE(header, std::string::npos) << copy;
+  EXPECT_EQ(copy.find("[solver]", header + 1), std::string::npos) << copy;
+  EXPECT_NE(copy.find("# a note\n"), std::string::npos);
+  // One key alone gives the same text as with_value.
+  EXPECT_EQ(scene.with_values({{cell, "0.02"}}, {}), scene.with_value(cell, "0.02", {}));
+}
+
 TEST(SceneEdit, UnknownPathsNameTheSceneAndWhatExists) {
   const fs::path file = write_scene("unknown");
   const SceneText scene(file);

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "lituya/common/atomic_file.hpp"
+#include "lituya/common/csv_writer.hpp"
 #include "lituya/post/postprocess.hpp"
 #include "lituya/pre/preprocess.hpp"
 #include "lituya/solver/solve.hpp"
@@ -52,8 +53,7 @@ std::vector<Frame> read_series(const std::filesystem::path& case_folder, const s
   return frames;
 }
 
-namespace {
-vtkSmartPointer<vtkUnstructuredGrid> read(const std::filesystem::path& vtu) {
+vtkSmartPointer<vtkUnstructuredGrid> read_unstructured_grid(const std::filesystem::path& vtu) {
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(vtu.c_str());
   reader->Update();
@@ -62,11 +62,10 @@ vtkSmartPointer<vtkUnstructuredGrid> read(const std::filesystem::path& vtu) {
     throw std::runtime_error("cannot read " + vtu.string());
   return grid;
 }
-}  // namespace
 
 std::vector<double> read_point_array(const std::filesystem::path& vtu, const std::string& name,
                                      int& components) {
-  auto grid = read(vtu);
+  auto grid = read_unstructured_grid(vtu);
   vtkDataArray* a = grid->GetPointData()->GetArray(name.c_str());
   if (!a) throw std::runtime_error(vtu.string() + " has no point array '" + name + "'");
   components = a->GetNumberOfComponents();
@@ -77,7 +76,7 @@ std::vector<double> read_point_array(const std::filesystem::path& vtu, const std
 }
 
 std::vector<double> read_positions(const std::filesystem::path& vtu) {
-  auto grid = read(vtu);
+  auto grid = read_unstructured_grid(vtu);
   std::vector<double> out(3 * grid->GetNumberOfPoints());
   for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) grid->GetPoint(i, &out[3 * i]);
   return out;
@@ -85,13 +84,10 @@ std::vector<double> read_positions(const std::filesystem::path& vtu) {
 
 void write_csv(const std::filesystem::path& file, const std::string& header,
                const std::vector<std::vector<double>>& rows) {
-  write_file_atomically(file, [&](std::ostream& out) {
-    out << header << "\n" << std::setprecision(10);
-    for (const auto& row : rows) {
-      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << row[i];
-      out << "\n";
-    }
-  });
+  // The header is written as the cases give it, comma-separated plain names.
+  CsvWriter table(csv_split(header));
+  for (const auto& row : rows) table.row(row);
+  table.write(file);
 }
 
 }  // namespace lituya::verify

@@ -1,6 +1,9 @@
 #pragma once
 // What every verification case shares: running a scene through pre + solve (+ post), reading
 // the output series, and recording a check (measured vs reference vs tolerance).
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -62,6 +65,8 @@ std::vector<Frame> read_series(const std::filesystem::path& case_folder, const s
 std::vector<double> read_point_array(const std::filesystem::path& vtu, const std::string& name,
                                      int& components);
 std::vector<double> read_positions(const std::filesystem::path& vtu);  // 3 per point
+// The whole .vtu (VTK's reader); throws naming the file when it holds no points.
+vtkSmartPointer<vtkUnstructuredGrid> read_unstructured_grid(const std::filesystem::path& vtu);
 
 // Writes a CSV with a header and rows.
 void write_csv(const std::filesystem::path& file, const std::string& header,
@@ -72,6 +77,7 @@ using CaseFunction = std::function<void(const CaseContext&, CaseResult&)>;
 void run_bar_vibration(const CaseContext& context, CaseResult& result);
 void run_sliding_block(const CaseContext& context, CaseResult& result);
 void run_gravity_column(const CaseContext& context, CaseResult& result);
+void run_column_collapse(const CaseContext& context, CaseResult& result);
 void run_case_a(const CaseContext& context, CaseResult& result);
 void run_case_b(const CaseContext& context, CaseResult& result);
 void run_case_c(const CaseContext& context, CaseResult& result);
@@ -79,5 +85,6 @@ void run_hydrostatic_tank(const CaseContext& context, CaseResult& result);
 void run_dam_break(const CaseContext& context, CaseResult& result);
 void run_terzaghi(const CaseContext& context, CaseResult& result);
 void run_seepage(const CaseContext& context, CaseResult& result);
+void run_sponge(const CaseContext& context, CaseResult& result);
 
 }  // namespace lituya::verify

@@ -10,11 +10,17 @@
 #include "case_support.hpp"
 #include "lituya/common/atomic_file.hpp"
 #include "lituya/common/input_error.hpp"
+#include "lituya/common/json_file.hpp"
 #include "lituya/common/output_folder.hpp"
 #include "lituya/common/provenance.hpp"
 #include "lituya/solver/solve.hpp"
 
 namespace lituya::verify {
+
+// verification/extremes and its impact sub-case (extremes.cpp); declared here, the one place
+// that needs them.
+void run_extremes(const CaseContext& context, CaseResult& result);
+void run_extremes_impact(const CaseContext& context, CaseResult& result);
 
 namespace {
 
@@ -29,6 +35,8 @@ const std::vector<CaseEntry>& all_cases() {
       {"bar_vibration", "1D elastic bar vibration", run_bar_vibration},
       {"sliding_block", "Block sliding on a rigid incline", run_sliding_block},
       {"gravity_column", "Gravity loading of a soil column", run_gravity_column},
+      {"column_collapse", "Granular column collapse (dry, a = 2) at the default Courant number",
+       run_column_collapse},
       {"case_a", "Case A: granular collapse on an erodible 22 degree slope", run_case_a},
       {"case_b", "Case B: dry granular slide into water down a 45 degree slope", run_case_b},
       {"case_c", "Case C: dry and saturated slides on rigid and erodible slopes", run_case_c},
@@ -36,6 +44,11 @@ const std::vector<CaseEntry>& all_cases() {
       {"dam_break", "Dam break on a dry bed against Ritter's solution", run_dam_break},
       {"terzaghi", "Terzaghi 1D consolidation", run_terzaghi},
       {"seepage", "Seepage through a sand column (Darcy-Forchheimer)", run_seepage},
+      {"sponge", "A long wave leaving a tank through a sponge zone", run_sponge},
+      {"extremes", "Stability at the extremes of the inputs", run_extremes},
+      // A folder of its own, so that its known failure does not excuse the group's checks.
+      {"extremes/impact", "Stability at the extremes: a slide's impact at 16 points per cell",
+       run_extremes_impact},
   };
   return cases;
 }
@@ -49,19 +62,6 @@ std::string number(double v) {
 std::string status(const CaseResult& r) {
   if (r.passed()) return r.known_failure ? "PASS (listed as a known failure: update it)" : "PASS";
   return r.known_failure ? "FAIL (known failure)" : "FAIL";
-}
-
-std::string json_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    out += c;
-  }
-  return out;
 }
 
 // Every case folder (one holding stages.toml) that the case wrote under its work folder, with
@@ -116,38 +116,55 @@ void write_report(const std::filesystem::path& folder, const std::vector<CaseRes
         md << "\n![" << plot.string() << "](" << plot.string() << ")\n";
     }
   });
-  write_file_atomically(folder / "summary.json", [&](std::ostream& json) {
-    json << "{\n  \"variant\": \"" << (full ? "full" : "quick") << "\",\n  \"lituya_version\": \""
-         << json_escape(lituya_version()) << "\",\n  \"commit\": \"" << json_escape(lituya_commit())
-         << "\",\n  \"date\": \"" << provenance.date << "\",\n  \"cases\": [\n";
-    for (std::size_t i = 0; i < results.size(); ++i) {
-      const CaseResult& r = results[i];
-      json << "    {\"name\": \"" << r.name << "\", \"passed\": " << (r.passed() ? "true" : "false")
-           << ", \"known_failure\": " << (r.known_failure ? "true" : "false")
-           << ", \"wall_time\": " << r.wall_time << ", \"error\": \"" << json_escape(r.error)
-           << "\", \"case_hashes\": {";
-      for (std::size_t k = 0; k < r.case_hashes.size(); ++k)
-        json << (k ? ", " : "") << "\"" << json_escape(r.case_hashes[k].first) << "\": \""
-             << r.case_hashes[k].second << "\"";
-      json << "}, \"checks\": [";
-      for (std::size_t k = 0; k < r.checks.size(); ++k) {
-        const Check& c = r.checks[k];
-        json << (k ? ", " : "") << "{\"quantity\": \"" << c.quantity << "\", \"unit\": \"" << c.unit
-             << "\", \"measured\": " << (std::isfinite(c.measured) ? number(c.measured) : "null")
-             << ", \"reference\": " << c.reference << ", \"tolerance\": " << c.tolerance
-             << ", \"passed\": " << (c.passed ? "true" : "false") << "}";
-      }
-      json << "]}" << (i + 1 < results.size() ? "," : "") << "\n";
-    }
-    json << "  ]\n}\n";
-  });
+  // Built as a JSON value (strings escaped whatever they hold) and written with every double
+  // as it was measured: a script comparing reports must not see a 4-digit rounding.
+  Json cases = Json::array();
+  for (const CaseResult& r : results) {
+    Json hashes = Json::object();
+    for (const auto& [case_folder, hash] : r.case_hashes) hashes[case_folder] = hash;
+    Json checks = Json::array();
+    for (const Check& c : r.checks)
+      checks.push_back({{"quantity", c.quantity},
+                        {"unit", c.unit},
+                        {"measured", json_number(c.measured)},
+                        {"reference", json_number(c.reference)},
+                        {"tolerance", json_number(c.tolerance)},
+                        {"passed", c.passed}});
+    cases.push_back({{"name", r.name},
+                     {"title", r.title},
+                     {"passed", r.passed()},
+                     {"known_failure", r.known_failure},
+                     {"wall_time", json_number(r.wall_time)},
+                     {"error", r.error},
+                     {"case_hashes", hashes},
+                     {"checks", checks}});
+  }
+  write_json_file(folder / "summary.json", {{"variant", full ? "full" : "quick"},
+                                            {"lituya_version", lituya_version()},
+                                            {"commit", lituya_commit()},
+                                            {"date", provenance.date},
+                                            {"cases", cases}});
 }
 
 }  // namespace
 
+std::filesystem::path default_verification_folder() {
+  // The executable's own path rather than argv[0] or the working folder: the command may be
+  // run from any folder, through a symlink or from $PATH. A staged install (DESTDIR) or a
+  // prefix moved after installing still finds its cases, since the path is relative.
+  std::error_code error;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const std::filesystem::path installed =
+        (exe.parent_path() / LITUYA_INSTALLED_VERIFICATION_DIR).lexically_normal();
+    if (std::filesystem::is_directory(installed, error)) return installed;
+  }
+  return LITUYA_VERIFICATION_DIR;
+}
+
 bool run_verification(const RunnerOptions& options) {
   const std::filesystem::path source = options.verification_folder.empty()
-                                           ? std::filesystem::path(LITUYA_VERIFICATION_DIR)
+                                           ? default_verification_folder()
                                            : options.verification_folder;
   for (const std::string& name : options.only) {
     bool known = false;
@@ -157,10 +174,19 @@ bool run_verification(const RunnerOptions& options) {
   prepare_output_folder(options.report_folder, options.overwrite);
   const ReportProvenance provenance;
   std::vector<CaseResult> results;
-  for (const CaseEntry& entry : all_cases()) {
-    if (!options.only.empty() &&
-        std::find(options.only.begin(), options.only.end(), entry.name) == options.only.end())
-      continue;
+  std::vector<const CaseEntry*> selected;
+  for (const CaseEntry& entry : all_cases())
+    if (options.only.empty() ||
+        std::find(options.only.begin(), options.only.end(), entry.name) != options.only.end())
+      selected.push_back(&entry);
+  // One line when a case starts and one when it ends, so that a run of several minutes shows
+  // where it is (a case's own output, e.g. a warning, comes between them).
+  std::ostream null_stream(nullptr);
+  std::ostream& progress = options.progress ? *options.progress : null_stream;
+  for (std::size_t k = 0; k < selected.size(); ++k) {
+    const CaseEntry& entry = *selected[k];
+    const std::string counter =
+        "verify [" + std::to_string(k + 1) + "/" + std::to_string(selected.size()) + "] ";
     CaseResult result;
     result.name = entry.name;
     result.title = entry.title;
@@ -168,8 +194,12 @@ bool run_verification(const RunnerOptions& options) {
     CaseContext context{source / entry.name, options.report_folder / entry.name,
                         options.report_folder, options.full, options.threads};
     std::filesystem::create_directories(context.work);
-    result.known_failure = std::filesystem::exists(context.source / "known-failure.md");
-    std::cout << "verify: " << entry.title << " (" << result.variant << ") ..." << std::flush;
+    // known-failure-full.md: a failure of the full variant only (finer meshes than CI runs).
+    result.known_failure =
+        std::filesystem::exists(context.source / "known-failure.md") ||
+        (options.full && std::filesystem::exists(context.source / "known-failure-full.md"));
+    progress << counter << entry.name << ": started (" << result.variant
+             << " variant: " << entry.title << ")" << std::endl;
     const auto start = std::chrono::steady_clock::now();
     try {
       entry.run(context, result);
@@ -183,12 +213,14 @@ bool run_verification(const RunnerOptions& options) {
     }
     result.wall_time =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << " " << status(result) << " (" << number(result.wall_time) << " s)\n";
+    progress << counter << entry.name << ": " << status(result) << " in "
+             << number(result.wall_time) << " s\n";
     for (const Check& c : result.checks)
-      std::cout << "    " << (c.passed ? "pass " : "FAIL ") << c.quantity << ": measured "
-                << number(c.measured) << ", reference " << number(c.reference) << " +- "
-                << number(c.tolerance) << " " << c.unit << "\n";
-    if (!result.error.empty()) std::cout << "    error: " << result.error << "\n";
+      progress << "    " << (c.passed ? "pass " : "FAIL ") << c.quantity << ": measured "
+               << number(c.measured) << ", reference " << number(c.reference) << " +- "
+               << number(c.tolerance) << " " << c.unit << "\n";
+    if (!result.error.empty()) progress << "    error: " << result.error << "\n";
+    progress.flush();
     results.push_back(std::move(result));
   }
   write_report(options.report_folder, results, options.full, provenance);
@@ -198,9 +230,9 @@ bool run_verification(const RunnerOptions& options) {
     known += !r.passed() && r.known_failure;
   }
   const int failed = static_cast<int>(results.size()) - passed - known;
-  std::cout << "verification report: " << (options.report_folder / "report.md").string() << "\n"
-            << known << " known failure(s), documented in the report\n"
-            << "verification: " << passed << " passed, " << failed << " failed\n";
+  progress << "verification report: " << (options.report_folder / "report.md").string() << "\n"
+           << known << " known failure(s), documented in the report\n"
+           << "verification: " << passed << " passed, " << failed << " failed\n";
   return failed == 0;
 }
 

@@ -243,8 +243,17 @@ struct PostResult {
 //   water: gauges.csv, gauges.png and the gauge reference copies (with gauges),
 //          leading_wave.csv, leading_wave.png (with leading_wave), surface_profiles.csv,
 //          surface_profiles.png;
+//   always: the plots of plot_run_histories();
 // each PNG with its .gp script. Everything is validated before the folder is touched.
 PostResult postprocess(const std::filesystem::path& case_folder,
                        const std::filesystem::path& post_folder, bool overwrite);
+
+// Plots the run's probe tables (output/probes/<name>.csv: probe_<name>_<field>.png against the
+// run time) and stage histories (output/<stage>_history.csv: <stage>_history_kinetic_energy.png,
+// _time_step.png, _max_speed.png against the stage time) into post_folder (refused if it holds
+// files, unless `overwrite`). postprocess() draws them too; this serves a case without
+// post.toml. The result lists the files; nothing is written when the run wrote no such table.
+PostResult plot_run_histories(const std::filesystem::path& case_folder,
+                              const std::filesystem::path& post_folder, bool overwrite);
 
 }  // namespace lituya::post

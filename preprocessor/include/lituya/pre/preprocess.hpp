@@ -19,8 +19,10 @@ struct PreprocessSummary {
 // into a non-empty case folder unless overwrite is true (use prepare_output_folder), and
 // validates everything BEFORE creating the folder. Refuses a cell size whose mesh would need
 // more memory than the machine has (estimated before meshing) unless allow_large_mesh.
+// `gmsh_messages`: let gmsh print its own messages (reading the geometry, meshing each
+// dimension, its warnings) on standard output, as `lituya --verbose` asks.
 PreprocessSummary preprocess(const std::filesystem::path& scene_file,
                              const std::filesystem::path& case_folder, bool overwrite,
-                             bool allow_large_mesh = false);
+                             bool allow_large_mesh = false, bool gmsh_messages = false);
 
 }  // namespace lituya::pre

@@ -11,6 +11,7 @@
 
 #include <toml++/toml.h>
 
+#include "lituya/pre/liquid_points.hpp"
 #include "lituya/pre/mesh.hpp"
 #include "lituya/solver/case_description.hpp"
 
@@ -69,6 +70,10 @@ struct Scene {
   std::vector<solver::Stage> stages;
   solver::SolverSettings solver;
   solver::OutputSettings output;
+  std::vector<solver::Probe> probes;
+  std::vector<int> probe_lines;         // scene.toml line of each probe's position or point id
+  std::vector<solver::Sponge> sponges;  // damping_rate 0: the default, set by resolve_sponges
+  std::vector<int> sponge_lines;        // scene.toml line of each sponge's x_start
   std::optional<PostSettings> post;
 
   // True when the region's material is water (free water, liquid points only).
@@ -87,5 +92,16 @@ Scene read_scene(const std::filesystem::path& scene_file);
 // one of dimension `dimension - 1`, and that no cell belongs to two regions. Throws
 // InputError at the scene line, listing the groups the geometry has.
 void check_scene_groups(const Scene& scene, const Mesh& mesh);
+
+// Checks that every fixed probe lies in the mesh and every point probe names a point that
+// exists (ids count from 0 in points.vtu / liquid_points.vtu). Throws InputError at the
+// probe's line.
+void check_probes(const Scene& scene, const Mesh& mesh, std::size_t solid_points,
+                  std::size_t liquid_points);
+
+// Checks that every [[sponge]] zone holds water, and gives a sponge without damping_rate the
+// default kDefaultSpongeStrength sqrt(g / h), h the depth of the liquid points in the zone.
+// Throws InputError at the sponge's line.
+void resolve_sponges(Scene& scene, const LiquidPoints& liquid);
 
 }  // namespace lituya::pre

@@ -36,6 +36,7 @@ struct BoxScene {
   Vec water_min = Vec::Zero();
   Vec water_max = Vec::Zero();
   Vec water_velocity = Vec::Zero();  // initial velocity of every liquid point
+  std::vector<Sponge> sponges;       // absorbing zones for the water (damping_rate given)
 };
 
 template <int dim>

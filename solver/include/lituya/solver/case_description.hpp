@@ -101,13 +101,75 @@ struct SolverSettings {
   // continuous linear fields (pressure_projection.cpp): removes the cell-to-cell pressure
   // noise of linear cells, keeps linear (hydrostatic) fields exactly. 0 = never.
   int pressure_projection_interval = 10;
+  // Wall time between two checkpoints within a stage (checkpoint.hpp), in minutes; a
+  // checkpoint is also written at the end of every stage and when the run is asked to stop.
+  // Half an hour loses little of a long run and costs little disk time. 0 = only those.
+  double checkpoint_interval_minutes = 30.0;
 };
 
+// The fields each output file can hold, in the order they are written (output/README.txt
+// describes them). The point `id` and the positions and cells are always written.
+inline const std::vector<std::string> kSolidPointFields = {"displacement",   "velocity", "stress",
+                                                           "plastic_strain", "material", "mass",
+                                                           "volume",         "porosity"};
+inline const std::vector<std::string> kLiquidPointFields = {"velocity", "pressure", "porosity",
+                                                            "mass",     "volume",   "material"};
+inline const std::vector<std::string> kGridFields = {
+    "mass", "velocity", "liquid_mass", "liquid_velocity", "porosity", "liquid_pressure"};
+
+// The scene's [output] table: which fields of the solid points (`point_fields`), the liquid
+// points and the grid are written, whether the grid is written, and whether the VTU arrays
+// are zlib-compressed (`compression = "zlib" | "none"`).
 struct OutputSettings {
-  std::vector<std::string> point_fields = {"displacement", "velocity", "stress", "plastic_strain",
-                                           "material",     "mass",     "volume", "porosity"};
+  std::vector<std::string> point_fields = kSolidPointFields;
+  std::vector<std::string> liquid_fields = kLiquidPointFields;
+  std::vector<std::string> grid_fields = kGridFields;
   bool grid = true;
+  bool compress = true;
+  bool writes(const std::vector<std::string>& fields, const std::string& field) const;
 };
+
+// A probe: a sensor that records fields over time (output/probes/<name>.csv), either at a
+// fixed position (interpolated from nodal values of the points around it) or riding on one
+// material point (its own values, and the nodal interpolation at its position for the fields
+// the point does not carry), like Anura3D's OUTPUT_MATERIAL_POINTS.
+inline const std::vector<std::string> kProbeFields = {"pore_pressure", "effective_stress",
+                                                      "velocity", "liquid_velocity", "porosity"};
+
+struct Probe {
+  std::string name;
+  std::vector<double> position;  // m, `dimension` components; empty for a point probe
+  enum class Follows { kPosition, kSolidPoint, kLiquidPoint };
+  Follows follows = Follows::kPosition;
+  long long point_id = -1;  // id (index in points.vtu / liquid_points.vtu) of a point probe
+  std::vector<std::string> fields = kProbeFields;
+  // s between two samples; 0 = at each output of the stage only. A finer interval samples at
+  // the first step on or after each multiple of it (and at each output too).
+  double interval = 0;
+  bool records(const std::string& field) const;
+};
+
+// A sponge (absorbing) zone at a tank end: in it the water's nodal velocity relaxes towards
+// rest, v <- v / (1 + dt sigma(x)) each step (implicit, so stable at any step), with a rate
+// that rises quadratically from 0 where the waves enter (x_start) to damping_rate at the far
+// end (x_end) and stays there beyond it. The zone runs along x and may face either way
+// (x_end < x_start: a sponge at the -x end); it spans the whole height (and depth in 3D).
+// The slow start keeps the reflection from the zone's own edge small, the rate's end value
+// and the zone's length set how much of a wave survives its way in and out (user manual,
+// water section). The soil is not damped: a slide that runs into the zone keeps its motion.
+struct Sponge {
+  double x_start = 0;       // m, where waves enter the zone: sigma = 0
+  double x_end = 0;         // m, the far end: sigma = damping_rate here and beyond
+  double damping_rate = 0;  // 1/s, sigma at x_end; 0 in a scene = the default (lituya pre)
+  // sigma(x) in 1/s.
+  double rate_at(double x) const;
+};
+
+// Default damping_rate, in units of sqrt(g / h) (h: the still water depth in the zone): a
+// wave some 6 h long has an angular frequency of about sqrt(g / h), and a rate of that order
+// damps it within a zone of a wavelength without turning the zone into a wall. Twice this
+// reflected more in verification/sponge (known-failure.md: 0.24 against 0.15).
+inline constexpr double kDefaultSpongeStrength = 1.0;
 
 struct Group {
   std::string name;
@@ -121,6 +183,11 @@ BoundaryCondition read_boundary(const TomlTable& t, int dimension);
 Stage read_stage(const TomlTable& t);
 SolverSettings read_solver_settings(const TomlTable& t);
 OutputSettings read_output_settings(const TomlTable& t);
+// A [[probe]] table; `has_water` false refuses the water fields (the case has no liquid).
+Probe read_probe(const TomlTable& t, int dimension, bool has_water);
+// A [[sponge]] table. With `rate_required` (a case's stages.toml) damping_rate must be given;
+// a scene may leave it out for the default (kDefaultSpongeStrength).
+Sponge read_sponge(const TomlTable& t, bool rate_required);
 
 // Writers: the same keys, for materials.toml / stages.toml.
 toml::table to_toml(const Material& m);
@@ -128,6 +195,8 @@ toml::table to_toml(const BoundaryCondition& b);
 toml::table to_toml(const Stage& s);
 toml::table to_toml(const SolverSettings& s);
 toml::table to_toml(const OutputSettings& o);
+toml::table to_toml(const Probe& p);
+toml::table to_toml(const Sponge& s);
 
 // The whole case folder as the solver sees it (everything but the mesh and points).
 struct CaseDescription {
@@ -142,6 +211,8 @@ struct CaseDescription {
   std::vector<Stage> stages;
   SolverSettings solver;
   OutputSettings output;
+  std::vector<Probe> probes;
+  std::vector<Sponge> sponges;  // absorbing zones for the water; empty: none
 };
 
 // Reads case/stages.toml and case/materials.toml; checks cross references (stage boundaries
@@ -153,5 +224,10 @@ CaseDescription read_case(const std::string& case_folder);
 void check_stage_boundaries(const std::vector<Stage>& stages,
                             const std::vector<BoundaryCondition>& boundaries,
                             const std::vector<TomlTable>& stage_tables);
+
+// Probe names become file names (output/probes/<name>.csv): refuses a second probe of the same
+// name at its `name` line.
+void check_probe_names(const std::vector<Probe>& probes,
+                       const std::vector<TomlTable>& probe_tables);
 
 }  // namespace lituya::solver

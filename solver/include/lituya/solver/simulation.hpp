@@ -50,6 +50,25 @@ struct StageReport {
 // Called at each output time of a stage: (stage, stage time, output index).
 using OutputCallback = std::function<void(const Stage&, double, int)>;
 
+// Where a running stage stands between two steps: what run_stage keeps besides the
+// simulation's own state, so that a checkpoint (checkpoint.hpp) can continue the stage exactly.
+struct StageProgress {
+  double time = 0;                // s since the start of the stage
+  int next_output_index = 0;      // the number of the next output file
+  double next_output_time = 0;    // s, stage time of the next scheduled output
+  double max_kinetic_energy = 0;  // quasi-static stop criterion: the peak so far
+  long steps = 0;                 // steps taken in the stage
+  double wall_time = 0;           // s of wall time spent in the stage so far
+};
+
+// Called after every step of a stage, its outputs written (checkpoints, stop requests).
+using StepCallback = std::function<void(const Stage&, const StageProgress&)>;
+
+namespace detail {
+template <int dim>
+struct CheckpointAccess;  // checkpoint.cpp: reads and restores the state below
+}  // namespace detail
+
 template <int dim>
 class Simulation {
  public:
@@ -67,7 +86,10 @@ class Simulation {
   // Where the progress line goes (nullptr: silent).
   void set_progress_stream(std::ostream* stream) { progress_ = stream; }
 
-  StageReport run_stage(const Stage& stage, const OutputCallback& on_output);
+  // Runs `stage` from its start, or with `resume` from where a checkpoint left it (no output
+  // at its start then). `after_step` is called after each step.
+  StageReport run_stage(const Stage& stage, const OutputCallback& on_output,
+                        const StepCallback& after_step = {}, const StageProgress* resume = nullptr);
 
   // Activates the named boundary conditions (a stage's list).
   void activate_boundaries(const std::vector<std::string>& names);
@@ -76,11 +98,16 @@ class Simulation {
   double stable_time_step(double courant) const;
   // One explicit step of length dt with local damping coefficient `damping`.
   void step(double dt, double damping);
-  // Fills nodal mass and velocity from the points (for grid output).
+  // Fills nodal mass and the grid velocities below from the points (for grid output); the
+  // nodal velocities the next step reads are left as they are.
   void map_to_grid();
+  const std::vector<Vec>& grid_velocity() const { return grid_velocity_; }
+  const std::vector<Vec>& grid_liquid_velocity() const { return grid_liquid_velocity_; }
 
   double kinetic_energy() const;
   long step_count() const { return step_count_; }
+  // s, the length of the last step taken (0 before the first).
+  double last_time_step() const { return last_dt_; }
   const Mesh<dim>& mesh() const { return mesh_; }
   const TransferDamping& transfer_damping() const { return damping_; }
   const MaterialPoints<dim>& points() const { return solid_.points; }
@@ -110,6 +137,9 @@ class Simulation {
   std::size_t storage_bytes() const;
 
  private:
+  // Every member that carries state from one step to the next must be in the checkpoint, or a
+  // resumed run drifts from an uninterrupted one (checkpoint_test.cpp compares them bit for bit).
+  friend struct detail::CheckpointAccess<dim>;
   using SolidPhase = detail::Phase<dim, MaterialPoints<dim>, detail::PhaseSums<dim>>;
   using LiquidPhase = detail::Phase<dim, LiquidPoints<dim>, detail::LiquidSums<dim>>;
   using Transfer = detail::Transfer;
@@ -138,6 +168,7 @@ class Simulation {
     std::unique_ptr<MohrCoulomb> mohr_coulomb;
     double wave_speed;  // sqrt((lambda + 2G) / rho_dry); water: sqrt(K_w / rho_w)
     double solid_density = 0, max_porosity = 1, grain_diameter = 0;
+    double dry_density = 0;  // (1 - n_0) rho_s: the density at which J = 1 (Kirchhoff stress)
     double liquid_density = 0, bulk_modulus = 0, viscosity = 0;  // water only
   };
 
@@ -183,8 +214,12 @@ class Simulation {
   std::vector<double> node_porosity_;
   std::vector<double> node_pressure_;            // volume-weighted nodal liquid pressure
   std::vector<double> node_pore_pressure_push_;  // dt (1 - n) p / m_s (contact friction)
+  std::vector<Vec> grid_velocity_, grid_liquid_velocity_;  // map_to_grid (output only)
   std::vector<double> node_mesh_volume_;         // integral of N_i over the mesh (lumped volume)
   std::vector<double> liquid_flux_divergence_;   // per liquid point, div((1-n) v_s + n v_w)
+  // Per node, dt-independent sponge rate sigma (1/s) of the description's [[sponge]] zones;
+  // empty when the case has none, so the nodal update skips it (two_phase.cpp).
+  std::vector<double> node_sponge_rate_;
   struct ProjectionScratch {
     std::vector<double> solution, rhs, diagonal, residual, preconditioned, direction, product;
     std::vector<double> point_values;

@@ -1,6 +1,7 @@
 #pragma once
 // The progress of a whole sweep on one line:
 //   sweep [########............] 2/5 runs  friction_angle=18  elapsed 1m20s  eta 2m00s
+// With runs side by side (--jobs) the line names every run that is going, separated by " | ".
 // On a terminal the line is redrawn in place (\r) and each finished run leaves one line above
 // it; elsewhere (a log file, CI) the line is printed when a run starts and at the end. The
 // solver's own progress is not shown: it goes to a TickStream, which only lets the line
@@ -10,6 +11,7 @@
 #include <ostream>
 #include <streambuf>
 #include <string>
+#include <vector>
 
 namespace lituya::sweep {
 
@@ -21,16 +23,17 @@ std::string progress_bar(int done, int total, int width = 20);
 
 class SweepProgress {
  public:
-  // `out` may be nullptr (no output). `terminal`: redraw the line in place.
-  SweepProgress(std::ostream* out, bool terminal, int total);
+  // `out` may be nullptr (no output). `terminal`: redraw the line in place. `jobs`: how many
+  // runs go side by side (for the time estimate).
+  SweepProgress(std::ostream* out, bool terminal, int total, int jobs = 1);
 
-  // A run starts; `label` says which, e.g. "friction_angle=18".
+  // A run starts; `label` says which, e.g. "friction_angle=18" (unique among the runs going).
   void start_run(const std::string& label);
   // Called while a run goes on: redraws the line on a terminal, at most once a second.
   void tick();
-  // The run ended after `wall_time` s; `result` is printed on a line of its own. `timed`:
-  // the run counts towards the time estimate (false for a run skipped at once).
-  void end_run(const std::string& result, double wall_time, bool timed);
+  // The run `label` ended after `wall_time` s; `result` is printed on a line of its own.
+  // `timed`: the run counts towards the time estimate (false for a run skipped at once).
+  void end_run(const std::string& label, const std::string& result, double wall_time, bool timed);
   // The sweep ended: the last state of the line, and a newline on a terminal.
   void finish();
 
@@ -44,12 +47,15 @@ class SweepProgress {
 
   std::ostream* out_;
   bool terminal_;
-  int total_, done_ = 0;
-  std::string label_;
-  Clock::time_point start_, run_start_, last_draw_;
+  int total_, jobs_, done_ = 0;
+  struct Running {
+    std::string label;
+    Clock::time_point start;
+  };
+  std::vector<Running> running_;
+  Clock::time_point start_, last_draw_;
   double timed_seconds_ = 0;
   int timed_runs_ = 0;
-  bool running_ = false;
   size_t drawn_ = 0;  // length of the line on screen (terminal)
 };
 

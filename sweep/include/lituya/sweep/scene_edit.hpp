@@ -37,6 +37,12 @@ struct KeyTarget {
   bool is_file = false;                 // a file reference, resolved against the scene's folder
 };
 
+// One key of a scene copy and the TOML text of its value (one of SceneText::literals()).
+struct KeySetting {
+  KeyTarget target;
+  std::string literal;
+};
+
 class SceneText {
  public:
   // Reads and parses the scene; InputError naming the file (and line) when it cannot be read
@@ -67,6 +73,11 @@ class SceneText {
   // to an inline table).
   std::string with_value(const KeyTarget& target, const std::string& literal,
                          const std::vector<std::string>& note) const;
+
+  // The same with several keys set at once (a sweep over several parameters). The keys must
+  // be distinct; keys added to a table the scene does not have go under one new header.
+  std::string with_values(const std::vector<KeySetting>& settings,
+                          const std::vector<std::string>& note) const;
 
   // The value `key` has in `text` (a copy), as TOML text; empty when it is not set. Used to
   // check the copies, and by tests.

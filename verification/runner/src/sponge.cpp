@@ -1,0 +1,110 @@
+// A long wave leaving a tank through a sponge zone, and the same tank without one
+// (verification/sponge/README.md): the reflection coefficient at a gauge between the wave's
+// source and the tank end.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "case_support.hpp"
+#include "lituya/post/plot.hpp"
+#include "lituya/pre/preprocess.hpp"
+#include "lituya/solver/solve.hpp"
+
+namespace lituya::verify {
+
+namespace {
+// The tank of tank.geo and the gauge (README.md).
+constexpr double kGravity = 9.81, kDepth = 0.15;
+constexpr double kGauge = 1.2;   // m, gauge position, past the initial wavelet (x < 0.9 m)
+constexpr double kKernel = 0.1;  // m, half-width of the gauge's averaging hat
+
+struct Record {
+  std::vector<double> time, elevation;  // s, m above the still water depth at t = 0
+};
+
+// Water depth at the gauge from the water volume around it: sum_q V_q K(x_q - x_g), with K the
+// hat of half-width kKernel and unit integral. In 2D a point's volume is an area per metre, so
+// the sum is a depth; a point moving across the hat changes it continuously (a box bin would
+// jump by a whole point's volume).
+double gauge_depth(const std::filesystem::path& vtu) {
+  int components = 0;
+  const std::vector<double> volume = read_point_array(vtu, "volume", components);
+  const std::vector<double> x = read_positions(vtu);
+  double depth = 0;
+  for (std::size_t q = 0; q < volume.size(); ++q) {
+    const double r = std::abs(x[3 * q] - kGauge) / kKernel;
+    if (r < 1) depth += volume[q] * (1 - r) / kKernel;
+  }
+  return depth;
+}
+
+Record run_tank(const CaseContext& context, const std::string& scene, const std::string& name) {
+  const auto case_folder = context.work / name / "case";
+  pre::preprocess(context.source / scene, case_folder, /*overwrite=*/true);
+  solver::SolveOptions options;
+  options.threads = context.threads;
+  options.overwrite = true;
+  options.keep_previous_output = false;  // the report is rebuilt each time: no output.previous
+  solver::solve_case(case_folder, options);
+  Record record;
+  double still = std::numeric_limits<double>::quiet_NaN();
+  for (const Frame& frame : read_series(case_folder, "release", "liquid")) {
+    const double depth = gauge_depth(frame.file);
+    if (std::isnan(still)) still = depth;  // t = 0: the still water, before the wave arrives
+    record.time.push_back(frame.time);
+    record.elevation.push_back(depth - still);
+  }
+  return record;
+}
+
+// Largest |run - reference| over the run, over the incident crest height.
+double reflection(const Record& run, const Record& reference, double incident) {
+  double reflected = 0;
+  for (std::size_t k = 0; k < std::min(run.time.size(), reference.time.size()); ++k)
+    reflected = std::max(reflected, std::abs(run.elevation[k] - reference.elevation[k]));
+  return reflected / incident;
+}
+}  // namespace
+
+void run_sponge(const CaseContext& context, CaseResult& result) {
+  const std::string variant = context.full ? "full" : "quick";
+  const Record sponge = run_tank(context, "scene_" + variant + ".toml", "sponge");
+  const Record wall = run_tank(context, "scene_" + variant + "_wall.toml", "wall");
+  const Record reference = run_tank(context, "scene_" + variant + "_long.toml", "long");
+
+  // The incident wave reaches 0.9 m each side of its centre (x = 0 at the release): its tail
+  // has passed the gauge by (x_g + 0.9) / c, c = sqrt(g h); its crest is the long tank's
+  // highest elevation before then. A reflection is any difference from the long tank's record
+  // (the same mesh up to x = 3.1 m), whose own end sends nothing back before the run ends.
+  const double c = std::sqrt(kGravity * kDepth);
+  const double t_passed = (kGauge + 0.9) / c;
+  double incident = 0;
+  for (std::size_t k = 0; k < reference.time.size(); ++k)
+    if (reference.time[k] < t_passed) incident = std::max(incident, reference.elevation[k]);
+  const double r_sponge = reflection(sponge, reference, incident);
+  const double r_wall = reflection(wall, reference, incident);
+  // Tolerances and why: README.md.
+  add_check(result, "incident crest height at the gauge, linear theory a / 2", "m", incident, 0.02,
+            0.01);
+  add_check(result, "reflection without the sponge (end wall), reflected / incident height", "-",
+            r_wall, 1.0, 0.5);
+  add_check(result, "reflection with the sponge, reflected / incident height", "-", r_sponge, 0.0,
+            0.10);
+
+  std::vector<std::vector<double>> rows;
+  for (std::size_t k = 0;
+       k < std::min({sponge.time.size(), wall.time.size(), reference.time.size()}); ++k)
+    rows.push_back(
+        {sponge.time[k], sponge.elevation[k], wall.elevation[k], reference.elevation[k]});
+  const auto csv = context.work / "gauge.csv";
+  write_csv(csv, "time,elevation_sponge,elevation_wall,elevation_long_tank", rows);
+  const auto png = context.work / "gauge.png";
+  post::plot_xy(png, "Water surface at x = 1.2 m: a wave out through a sponge, and off a wall",
+                "time (s)", "surface elevation (m)",
+                {{csv, 1, 2, "with the sponge (x = 1.6 to 3.1 m)"},
+                 {csv, 1, 3, "without (end wall at x = 3.1 m)"},
+                 {csv, 1, 4, "4.3 m tank (no reflection before 5.4 s)"}});
+  result.plots.push_back(std::filesystem::relative(png, context.report));
+}
+
+}  // namespace lituya::verify
