@@ -306,8 +306,8 @@ struct CheckpointAccess {
     // The shape values are refreshed from the position at every relocation; stored, not
     // recomputed, so a point on a cell face keeps the cell and values it had.
     visit("solid.shape", s.solid_.shape, n_solid);
-    // The nodal velocities of the last step (or of the last grid output): the drag of the next
-    // step takes the relative velocity from them (two_phase.cpp).
+    // The nodal velocities of the last step (grid output leaves them alone): the drag of the
+    // next step takes the relative velocity from them (two_phase.cpp).
     visit("solid.node_velocity", s.solid_.node_velocity, n_nodes);
     if (!s.has_liquid_) return;
     const std::size_t n_liquid = s.water_.points.size();

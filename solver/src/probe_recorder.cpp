@@ -66,14 +66,6 @@ double run_time_at_stage_start(const std::vector<StageReport>& finished_stages) 
 }
 
 template <int dim>
-std::vector<double> lumped_node_volume(const Mesh<dim>& mesh) {
-  std::vector<double> volume(mesh.node_count(), 0.0);
-  for (std::size_t c = 0; c < mesh.cell_count(); ++c)
-    for (int node : mesh.cell_nodes[c]) volume[node] += mesh.cell_volume[c] / (dim + 1);
-  return volume;
-}
-
-template <int dim>
 std::vector<unsigned char> probe_patch(const Mesh<dim>& mesh, int cell) {
   std::vector<unsigned char> patch(mesh.cell_count(), 0);
   const auto& probe_nodes = mesh.cell_nodes[static_cast<std::size_t>(cell)];
@@ -224,7 +216,7 @@ ProbeRecorder<dim>::ProbeRecorder(const Simulation<dim>& simulation,
   const CaseDescription& description = simulation.description();
   const std::string stages_file = (fs::path(description.folder) / "stages.toml").string();
   const Mesh<dim>& mesh = simulation.mesh();
-  if (!probes.empty()) node_mesh_volume_ = lumped_node_volume(mesh);
+  if (!probes.empty()) node_mesh_volume_ = mesh.lumped_node_volume();
   for (const Probe& probe : probes) {
     Site site{probe,
               folder_ / "probes" / (probe.name + ".csv"),
@@ -444,7 +436,5 @@ template ProbeValues interpolate_probe<3>(const Simulation<3>&, int, const Mesh<
                                           const std::vector<unsigned char>*);
 template std::vector<unsigned char> probe_patch<2>(const Mesh<2>&, int);
 template std::vector<unsigned char> probe_patch<3>(const Mesh<3>&, int);
-template std::vector<double> lumped_node_volume<2>(const Mesh<2>&);
-template std::vector<double> lumped_node_volume<3>(const Mesh<3>&);
 
 }  // namespace lituya::solver

@@ -258,7 +258,7 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
     rotate_stress(sigma, l, dt);
     const MaterialModelData& material = materials_[points.material[p]];
     // The constitutive update acts on the Kirchhoff stress tau = J sigma, J = V / V_0 the
-    // point's volume over its volume at the material's dry density (scientific manual, 4.3).
+    // point's volume over its volume at the material's dry density (scientific manual, 4.6).
     // Its force -V sigma . grad N = -V_0 tau . grad N then does not grow with the point's
     // dilation, and its P-wave speed stays the c_p of the time step at any density; with the
     // rate of the Cauchy stress, a point dilated 40-fold at a thin front (grains parted at
@@ -404,13 +404,13 @@ StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback&
   // Everything the loop carries from one step to the next, so that a checkpoint taken after any
   // step continues the stage as if it had never stopped.
   StageProgress at;
+  const double output_interval = stage.output_interval > 0 ? stage.output_interval : stage.duration;
   if (resume) {
     at = *resume;
   } else {
     if (on_output) on_output(stage, at.time, at.next_output_index++);
     // An output interval longer than the stage still ends the stage with its final state.
-    at.next_output_time = std::min(
-        stage.output_interval > 0 ? stage.output_interval : stage.duration, stage.duration);
+    at.next_output_time = std::min(output_interval, stage.duration);
   }
   double& t = at.time;
   stage_steps_ = at.steps;
@@ -440,10 +440,7 @@ StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback&
     }
     if (output_now) {
       if (on_output) on_output(stage, t, at.next_output_index++);
-      at.next_output_time =
-          std::min(at.next_output_time +
-                       (stage.output_interval > 0 ? stage.output_interval : stage.duration),
-                   stage.duration);
+      at.next_output_time = std::min(at.next_output_time + output_interval, stage.duration);
     }
     report_progress(stage, t, at.wall_time + wall_seconds() - start_wall, false);
     // A stop asked for by SIGINT/SIGTERM is acted on here too (solve.cpp): the state is whole

@@ -228,11 +228,9 @@ std::vector<StageReport> run(const CaseDescription& description, const SolveOpti
         reason << "every " << description.solver.checkpoint_interval_minutes << " minutes";
       checkpoint(within_stage_checkpoint(output_folder), reason.str(), current, at);
       if (signal) {
-        // SIGINT/SIGTERM: the run ends with this step's state as its last output. Written after
-        // the checkpoint, which holds the state as a run never stopped has it (writing grid
-        // output maps the points to the nodes, whose velocities the next step's drag reads);
-        // a run resumed from it writes its next scheduled output over this one, under the
-        // same number, as a run never stopped does.
+        // SIGINT/SIGTERM: the run ends with this step's state as its last output, written
+        // after the checkpoint; a run resumed from it writes its next scheduled output over
+        // this one, under the same number, as a run never stopped does.
         if (last_output != std::pair<const Stage*, double>{&stage, at.time})
           writer.write(simulation, stage, at.time, at.next_output_index);
         std::ostringstream where;

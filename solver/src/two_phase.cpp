@@ -104,10 +104,7 @@ void Simulation<dim>::setup_liquid() {
   node_porosity_.assign(n_nodes, 1.0);
   node_pressure_.assign(n_nodes, 0.0);
   node_pore_pressure_push_.assign(n_nodes, 0.0);
-  node_mesh_volume_.assign(n_nodes, 0.0);
-  for (std::size_t c = 0; c < mesh_.cell_count(); ++c)
-    for (int node : mesh_.cell_nodes[c])
-      node_mesh_volume_[node] += mesh_.cell_volume[c] / (dim + 1);
+  node_mesh_volume_ = mesh_.lumped_node_volume();
   liquid_flux_divergence_.assign(liquid.size(), 0.0);
   // Sponge zones: sigma at each node once, the strongest zone where two overlap. A node is
   // damped by its own position; the water in a cell sees the linear blend of its nodes.

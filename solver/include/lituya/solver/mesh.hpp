@@ -34,6 +34,15 @@ struct Mesh {
   std::size_t node_count() const { return node_position.size(); }
   std::size_t cell_count() const { return cell_nodes.size(); }
 
+  // The mesh volume each node stands for: the integral of its shape function, V_cell / (dim + 1)
+  // from every cell around it (the lumped volume of the porosity, eq. 5, and of the probes).
+  std::vector<double> lumped_node_volume() const {
+    std::vector<double> volume(node_count(), 0.0);
+    for (std::size_t c = 0; c < cell_count(); ++c)
+      for (int node : cell_nodes[c]) volume[node] += cell_volume[c] / (dim + 1);
+    return volume;
+  }
+
   // Computes neighbours, inverse Jacobians, gradients, volumes and heights from
   // node_position and cell_nodes. Returns the index of the first cell with non-positive
   // volume (inverted or degenerate), or -1 when all are valid.

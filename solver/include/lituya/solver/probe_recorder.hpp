@@ -55,11 +55,6 @@ ProbeValues interpolate_probe(const Simulation<dim>& simulation, int cell,
 template <int dim>
 std::vector<unsigned char> probe_patch(const Mesh<dim>& mesh, int cell);
 
-// The mesh volume each node stands for: the integral of its shape function, V_cell / (dim + 1)
-// from every cell around it.
-template <int dim>
-std::vector<double> lumped_node_volume(const Mesh<dim>& mesh);
-
 // The run-wide time at which a stage starts: the sum of the simulated times of the stages
 // before it, added in order (as output_writer.cpp's run clock).
 double run_time_at_stage_start(const std::vector<StageReport>& finished_stages);

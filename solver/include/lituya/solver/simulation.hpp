@@ -212,11 +212,11 @@ class Simulation {
   LiquidPhase water_;
   detail::NodalScatter<CouplingSums> coupling_;
   std::vector<double> node_porosity_;
-  std::vector<double> node_pressure_;            // volume-weighted nodal liquid pressure
-  std::vector<double> node_pore_pressure_push_;  // dt (1 - n) p / m_s (contact friction)
+  std::vector<double> node_pressure_;                      // volume-weighted nodal liquid pressure
+  std::vector<double> node_pore_pressure_push_;            // dt (1 - n) p / m_s (contact friction)
   std::vector<Vec> grid_velocity_, grid_liquid_velocity_;  // map_to_grid (output only)
-  std::vector<double> node_mesh_volume_;         // integral of N_i over the mesh (lumped volume)
-  std::vector<double> liquid_flux_divergence_;   // per liquid point, div((1-n) v_s + n v_w)
+  std::vector<double> node_mesh_volume_;        // integral of N_i over the mesh (lumped volume)
+  std::vector<double> liquid_flux_divergence_;  // per liquid point, div((1-n) v_s + n v_w)
   // Per node, dt-independent sponge rate sigma (1/s) of the description's [[sponge]] zones;
   // empty when the case has none, so the nodal update skips it (two_phase.cpp).
   std::vector<double> node_sponge_rate_;
