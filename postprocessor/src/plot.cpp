@@ -32,15 +32,6 @@ std::string shell_quoted(const std::string& text) {
   return q + "'";
 }
 
-// The script refers to data relative to its own folder, so the post folder can be moved or
-// archived and the scripts still run in it.
-std::string path_from(const fs::path& folder, const fs::path& file) {
-  std::error_code ec;
-  fs::path rel = fs::relative(fs::absolute(file), fs::absolute(folder), ec);
-  if (ec || rel.empty()) return fs::absolute(file).string();
-  return rel.string();
-}
-
 // As many digits as the CSV tables hold, so the script reads like the data it selects from.
 std::string number_text(double v) {
   std::ostringstream s;
@@ -50,6 +41,27 @@ std::string number_text(double v) {
 }
 
 }  // namespace
+
+// The script refers to data relative to its own folder, so the post folder can be moved or
+// archived and the scripts still run in it.
+std::string path_from(const fs::path& folder, const fs::path& file) {
+  std::error_code ec;
+  fs::path rel = fs::relative(fs::absolute(file), fs::absolute(folder), ec);
+  if (ec || rel.empty()) return fs::absolute(file).string();
+  return rel.string();
+}
+
+std::string gnuplot_text(const std::string& text) {
+  std::string out;
+  size_t start = 0;
+  while (true) {
+    const size_t end = text.find('\n', start);
+    out += gnuplot_quoted(text.substr(start, end - start));
+    if (end == std::string::npos) return out;
+    out += ".\"\\n\".";
+    start = end + 1;
+  }
+}
 
 bool gnuplot_available() {
   const char* path = std::getenv("PATH");
@@ -95,7 +107,7 @@ bool plot_xy(const fs::path& png, const std::string& title, const std::string& x
      << "set terminal pngcairo size 900,600 noenhanced\n"
      << "set output " << gnuplot_quoted(png.filename().string()) << "\n"
      << "set datafile separator ','\n"
-     << "set title " << gnuplot_quoted(title) << "\n"
+     << "set title " << gnuplot_text(title) << "\n"
      << "set xlabel " << gnuplot_quoted(xlabel) << "\n"
      << "set ylabel " << gnuplot_quoted(ylabel) << "\n"
      << "set grid\n"
@@ -127,7 +139,14 @@ bool plot_xy(const fs::path& png, const std::string& title, const std::string& x
          << gnuplot_quoted(s.label) << (i + 1 < series.size() ? ", \\\n" : "\n");
     }
   }
-  write_file_atomically(script, gp.str());
+  return run_gnuplot_script(png, gp.str());
+}
+
+bool run_gnuplot_script(const fs::path& png, const std::string& text) {
+  const fs::path folder = png.has_parent_path() ? png.parent_path() : fs::path(".");
+  fs::path script = png;
+  script.replace_extension(".gp");
+  write_file_atomically(script, text);
 
   if (!gnuplot_available()) {
     static std::once_flag warned;

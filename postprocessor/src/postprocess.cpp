@@ -18,6 +18,8 @@
 #include "lituya/common/output_folder.hpp"
 #include "lituya/common/toml_reader.hpp"
 #include "lituya/post/plot.hpp"
+#include "lituya/post/reference_error.hpp"
+#include "lituya/post/snapshot.hpp"
 
 namespace lituya::post {
 
@@ -106,11 +108,35 @@ class PostFolder {
     return made;
   }
   const fs::path& folder() const { return folder_; }
+  // A file written by someone else (the snapshots) into the folder.
+  void record(const fs::path& file) { result_.files.push_back(file); }
 
  private:
   fs::path folder_;
   PostResult& result_;
 };
+
+// A reference column as numbers, NaN where it has no value.
+std::vector<double> values_of(const std::vector<std::optional<double>>& column) {
+  std::vector<double> v;
+  v.reserve(column.size());
+  for (const auto& x : column) v.push_back(x.value_or(std::numeric_limits<double>::quiet_NaN()));
+  return v;
+}
+
+// The errors of one simulated series against its reference, recorded for errors.csv.
+const ReferenceError& record_error(PostResult& result, const std::string& plot,
+                                   const std::string& series, const std::vector<double>& sim_time,
+                                   const std::vector<double>& sim_value,
+                                   const std::vector<double>& ref_time,
+                                   const std::vector<double>& ref_value) {
+  ReferenceError e = compare_with_reference(sim_time, sim_value, ref_time, ref_value);
+  e.plot = plot;
+  e.series = series;
+  e.unit = "m";
+  result.errors.push_back(e);
+  return result.errors.back();
+}
 
 // What the slide measures need, read and checked before the post folder is touched.
 struct SlideInput {
@@ -278,10 +304,23 @@ bool measure_slide(const PostSettings& settings, const SlideInput& input,
     std::snprintf(label, sizeof label, "t = %g s", t);
     profile_series.push_back({profiles_csv, 2, 3, label, false, 1, t});
   }
-  bool plotted = out.plot("runout.png", "Front travel along the slope" + stage, "time (s)",
-                          "front travel (m)", runout_series);
-  plotted = out.plot("wall_height.png", "Height of the mass at the wall" + stage, "time (s)",
-                     "height normal to the slope (m)", wall_series, true) &&
+  // Against a reference, the title carries the errors (reference_error.hpp).
+  std::string runout_title = "Front travel along the slope" + stage;
+  std::string wall_title = "Height of the mass at the wall" + stage;
+  if (input.reference) {
+    const ReferenceData& reference = *input.reference;
+    runout_title +=
+        "\n" + error_summary(record_error(result, "runout.png", "front_travel", result.time,
+                                          result.front_travel, reference.time,
+                                          values_of(reference.front_travel)));
+    wall_title += "\n" + error_summary(record_error(result, "wall_height.png", "wall_height",
+                                                    result.time, result.wall_height, reference.time,
+                                                    values_of(reference.wall_height)));
+  }
+  bool plotted =
+      out.plot("runout.png", runout_title, "time (s)", "front travel (m)", runout_series);
+  plotted = out.plot("wall_height.png", wall_title, "time (s)", "height normal to the slope (m)",
+                     wall_series, true) &&
             plotted;
   plotted =
       out.plot("profiles.png", "Thickness along the slope" + stage, "along-slope distance s (m)",
@@ -303,6 +342,7 @@ PointCloud free_water(PointCloud cloud, double min_porosity) {
     if (!cloud.volume.empty()) out.volume.push_back(cloud.volume[i]);
     if (!cloud.id.empty()) out.id.push_back(cloud.id[i]);
     out.porosity.push_back(cloud.porosity[i]);
+    if (!cloud.speed.empty()) out.speed.push_back(cloud.speed[i]);
   }
   return out;
 }
@@ -367,7 +407,9 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
       plot_series.push_back({gauges_csv, 1, colour + 1, settings.gauge_names[g]});
       plot_series.back().line_type = colour;
     }
-    // Reference: a verbatim copy, and per gauge a table of the rows with a value.
+    // Reference: a verbatim copy, and per gauge a table of the rows with a value; the errors
+    // of each gauge go into the title.
+    std::string title = "Water surface at the wave gauges" + stage;
     if (input.reference) {
       const fs::path copy = out.file("gauge_reference.csv");
       std::error_code same;
@@ -386,11 +428,15 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
         table_g.close();
         plot_series.push_back({csv, 1, 2, settings.gauge_names[g] + " (reference)", true});
         plot_series.back().line_type = static_cast<int>(g) + 1;
+        title += "\n" + error_summary(record_error(result, "gauges.png", settings.gauge_names[g],
+                                                   result.liquid_time, result.gauge_eta[g],
+                                                   reference.time, values_of(reference.value[g])),
+                                      settings.gauge_names[g]);
       }
     }
-    plotted = out.plot("gauges.png", "Water surface at the wave gauges" + stage, "time (s)",
-                       "elevation above still water (m)", plot_series) &&
-              plotted;
+    plotted =
+        out.plot("gauges.png", title, "time (s)", "elevation above still water (m)", plot_series) &&
+        plotted;
   }
 
   if (settings.leading_wave) {
@@ -532,6 +578,80 @@ bool plot_time_histories(const fs::path& case_folder, PostFolder& out) {
   return plotted;
 }
 
+// One row per series drawn against a reference (reference_error.hpp for the definitions).
+void write_errors(const std::vector<ReferenceError>& errors, PostFolder& out) {
+  CsvWriter table({"plot", "series", "unit", "span_start", "span_end", "samples", "rms_error",
+                   "simulated_peak", "reference_peak", "peak_error", "peak_error_relative",
+                   "arrival_threshold", "simulated_arrival", "reference_arrival", "arrival_error"});
+  for (const ReferenceError& e : errors) {
+    table.text(e.plot).text(e.series).text(e.unit);
+    table.number(e.span_start).number(e.span_end).integer(e.samples).number(e.rms);
+    table.number(e.simulated_peak).number(e.reference_peak).number(e.peak_error);
+    table.number(e.peak_error_relative).number(e.threshold).number(e.simulated_arrival);
+    table.number(e.reference_arrival).number(e.arrival_error);
+    table.end_row();
+  }
+  table.write(out.file("errors.csv"));
+}
+
+// The series the snapshots are drawn from: the stage's solid points and the liquid stage's
+// water, whichever were written.
+struct SnapshotInput {
+  std::vector<SeriesEntry> solid, liquid;
+  std::vector<std::string> material_names;
+};
+
+std::optional<SnapshotInput> read_snapshot_input(const PostSettings& settings,
+                                                 const fs::path& case_folder,
+                                                 const std::optional<SlideInput>& slide,
+                                                 const std::optional<WaterInput>& water) {
+  if (settings.profile_times.empty()) return std::nullopt;
+  SnapshotInput input;
+  const fs::path output = case_folder / "output";
+  if (slide) {
+    input.solid = slide->series;
+    input.material_names = slide->material_names;
+  } else if (fs::exists(output / (settings.stage + "_points.pvd"))) {
+    input.solid = read_pvd(output / (settings.stage + "_points.pvd"));
+  }
+  if (water)
+    input.liquid = water->series;
+  else if (fs::exists(output / (settings.liquid_stage + "_liquid.pvd")))
+    input.liquid = read_pvd(output / (settings.liquid_stage + "_liquid.pvd"));
+  if (input.solid.empty() && input.liquid.empty()) return std::nullopt;
+  if (input.material_names.empty() && fs::exists(case_folder / "materials.toml"))
+    input.material_names = read_material_names(case_folder / "materials.toml");
+  return input;
+}
+
+// The scene at the outputs closest to the profile times, into <post>/snapshots/.
+bool draw_scene_snapshots(const PostSettings& settings, const SnapshotInput& input, int dimension,
+                          PostFolder& out, PostResult& result) {
+  std::vector<Snapshot> snapshots;
+  std::set<std::pair<size_t, size_t>> drawn;
+  const size_t none = static_cast<size_t>(-1);
+  for (double t : settings.profile_times) {
+    const size_t s = input.solid.empty() ? none : closest_output(input.solid, t);
+    const size_t l = input.liquid.empty() ? none : closest_output(input.liquid, t);
+    if (!drawn.insert({s, l}).second) continue;  // two times on the same outputs
+    std::optional<PointCloud> solid, liquid;
+    if (s != none) solid = read_points(input.solid[s].file, dimension);
+    if (l != none) liquid = read_liquid_points(input.liquid[l].file, dimension);
+    const double time = s != none ? input.solid[s].time : input.liquid[l].time;
+    snapshots.push_back(
+        make_snapshot(t, time, solid ? &*solid : nullptr, liquid ? &*liquid : nullptr));
+  }
+  const fs::path folder = out.folder() / "snapshots";
+  std::error_code error;
+  fs::remove_all(folder, error);  // an earlier post's snapshots, at other times (--force)
+  const SnapshotFiles files =
+      draw_snapshots(folder, snapshots, input.material_names, settings.stage);
+  for (const fs::path& file : files.files) out.record(file);
+  for (const Snapshot& s : snapshots) result.snapshot_times.push_back(s.time);
+  result.snapshots = files.pictures;
+  return files.plotted;
+}
+
 }  // namespace
 
 PostResult postprocess(const fs::path& case_folder, const fs::path& post_folder, bool overwrite) {
@@ -543,6 +663,8 @@ PostResult postprocess(const fs::path& case_folder, const fs::path& post_folder,
   const int dimension = case_dimension(case_folder);
   std::optional<WaterInput> water;
   if (settings.measures_water()) water = read_water_input(settings, case_folder, dimension);
+  const std::optional<SnapshotInput> snapshot_input =
+      read_snapshot_input(settings, case_folder, slide, water);
 
   prepare_output_folder(post_folder, overwrite);
 
@@ -551,6 +673,9 @@ PostResult postprocess(const fs::path& case_folder, const fs::path& post_folder,
   bool plotted = true;
   if (slide) plotted = measure_slide(settings, *slide, case_folder, dimension, out, result);
   if (water) plotted = measure_water(settings, *water, dimension, out, result) && plotted;
+  if (!result.errors.empty()) write_errors(result.errors, out);
+  if (snapshot_input)
+    plotted = draw_scene_snapshots(settings, *snapshot_input, dimension, out, result) && plotted;
   plotted = plot_time_histories(case_folder, out) && plotted;
   result.plots_written = plotted;
   return result;

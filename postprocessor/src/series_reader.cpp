@@ -191,6 +191,14 @@ PointCloud read_cloud(const fs::path& vtu, int dimension, bool liquid) {
     cloud.id.resize(n);
     for (vtkIdType i = 0; i < n; ++i) cloud.id[i] = static_cast<int>(a->GetTuple1(i));
   }
+  if (vtkDataArray* a = grid->GetPointData()->GetArray("velocity");
+      a && a->GetNumberOfComponents() == 3 && a->GetNumberOfTuples() == n) {
+    cloud.speed.resize(n);
+    for (vtkIdType i = 0; i < n; ++i) {
+      const double* v = a->GetTuple3(i);
+      cloud.speed[i] = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    }
+  }
   if (vtkDataArray* a = liquid ? scalar_array("porosity") : nullptr) {
     cloud.porosity.resize(n);
     for (vtkIdType i = 0; i < n; ++i) cloud.porosity[i] = a->GetTuple1(i);

@@ -1,10 +1,14 @@
 // The whole `lituya post` pipeline on a synthetic case, the validation of post.toml and of the
 // files it points at, and the gnuplot driver.
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "lituya/common/csv_writer.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/post/plot.hpp"
 #include "synthetic_output.hpp"
@@ -140,6 +144,103 @@ TEST_F(PostCase, InitialFrontAndReferenceData) {
   EXPECT_DOUBLE_EQ(reference_wall[2][1], 0.08);
   EXPECT_NE(read_text(case_ / "post" / "runout.gp").find("reference_runout.csv"),
             std::string::npos);
+}
+
+// The front travels 0, 0.1, 0.3 m and the wall height falls 0.14, 0.10, 0.06 m at 0, 0.5,
+// 1 s; the reference says 0, 0.2, 0.3 m and 0.14, 0.12, (none) m.
+TEST_F(PostCase, ErrorsAgainstTheReferenceInTitlesAndCsv) {
+  write_text(case_ / "reference.csv",
+             "time,front_travel,wall_height\n0,0,0.14\n0.5,0.2,0.12\n1.0,0.3,\n");
+  write_text(case_ / "post.toml", std::string(kPostToml) + "reference = \"reference.csv\"\n");
+  const PostResult result = postprocess(case_, case_ / "post", false);
+  ASSERT_EQ(result.errors.size(), 2u);
+
+  const std::string csv = read_text(case_ / "post" / "errors.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "plot,series,unit,span_start,span_end,samples,rms_error,simulated_peak,"
+            "reference_peak,peak_error,peak_error_relative,arrival_threshold,simulated_arrival,"
+            "reference_arrival,arrival_error");
+  EXPECT_EQ(csv.substr(csv.find('\n') + 1, 34), "runout.png,front_travel,m,0,1,3,0.");
+  // Columns from span_start on, as numbers (the three text columns left out).
+  std::vector<std::vector<double>> rows;
+  {
+    std::istringstream lines(csv);
+    std::string line;
+    std::getline(lines, line);
+    while (std::getline(lines, line)) {
+      const std::vector<std::string> fields = csv_split(line);
+      ASSERT_EQ(fields.size(), 15u) << line;
+      rows.emplace_back();
+      for (size_t k = 3; k < fields.size(); ++k)
+        rows.back().push_back(fields[k].empty() ? NAN : std::stod(fields[k]));
+    }
+  }
+  ASSERT_EQ(rows.size(), 2u);
+  // Runout: errors 0, -0.1, 0; peaks 0.3 both; 10 % of 0.3 reached at 0.15 s (simulation,
+  // 0 -> 0.1 m over 0.5 s) and 0.075 s (reference, 0 -> 0.2 m).
+  const auto& runout = rows[0];
+  EXPECT_EQ(runout[2], 3);
+  EXPECT_NEAR(runout[3], std::sqrt(0.01 / 3), 1e-9);
+  EXPECT_NEAR(runout[6], 0.0, 1e-9);
+  EXPECT_NEAR(runout[8], 0.03, 1e-12);
+  EXPECT_NEAR(runout[9], 0.15, 1e-8);
+  EXPECT_NEAR(runout[10], 0.075, 1e-12);
+  EXPECT_NEAR(runout[11], 0.075, 1e-8);
+  // Wall height: the reference ends at 0.5 s; errors 0 and -0.02; it only falls, so no
+  // arrival (blank cells).
+  const auto& wall = rows[1];
+  EXPECT_EQ(csv.substr(csv.find("\nwall_height.png,wall_height,m,"), 31),
+            "\nwall_height.png,wall_height,m,");
+  EXPECT_DOUBLE_EQ(wall[1], 0.5);
+  EXPECT_EQ(wall[2], 2);
+  EXPECT_NEAR(wall[3], std::sqrt(0.0004 / 2), 1e-9);
+  EXPECT_NEAR(wall[6], 0.0, 1e-9);
+  EXPECT_TRUE(std::isnan(wall[9]) && std::isnan(wall[11]));
+
+  // The titles carry them, on a second line.
+  EXPECT_NE(read_text(case_ / "post" / "runout.gp")
+                .find("set title 'Front travel along the slope (stage ''release'')'.\"\\n\"."
+                      "'RMS 0.0577 m, peak "),
+            std::string::npos)
+      << read_text(case_ / "post" / "runout.gp");
+  EXPECT_NE(read_text(case_ / "post" / "wall_height.gp").find("RMS 0.0141 m, peak "),
+            std::string::npos);
+  EXPECT_NE(read_text(case_ / "post" / "wall_height.gp").find(", arrival -'"), std::string::npos);
+}
+
+TEST_F(PostCase, NoReferenceNoErrorsCsv) {
+  const PostResult result = postprocess(case_, case_ / "post", false);
+  EXPECT_TRUE(result.errors.empty());
+  EXPECT_FALSE(fs::exists(case_ / "post" / "errors.csv"));
+}
+
+// profile_times 0, 0.4, 1 -> the outputs at 0, 0.5 and 1 s, drawn by material (column, bed)
+// and by speed; an earlier post's snapshots at other times do not survive --force.
+TEST_F(PostCase, SnapshotsAtTheProfileTimes) {
+  PostResult result = postprocess(case_, case_ / "post", false);
+  ASSERT_EQ(result.snapshot_times.size(), 3u);
+  EXPECT_DOUBLE_EQ(result.snapshot_times[1], 0.5);
+  const fs::path snapshots = case_ / "post" / "snapshots";
+  // The column at 0.5 s (0.3 x 0.10 m in 5 mm points) and the bed (1.1 x 0.01 m).
+  EXPECT_EQ(read_csv_rows(snapshots / "t0.500.csv").size(), 60u * 20u + 220u * 2u);
+  const std::string material = read_text(snapshots / "t0.500_material.gp");
+  EXPECT_NE(material.find("title 'column'"), std::string::npos) << material;
+  EXPECT_NE(material.find("title 'bed'"), std::string::npos) << material;
+  // The synthetic output has no velocity: the speed picture says so.
+  EXPECT_NE(read_text(snapshots / "t0.500_speed.gp").find("the output has no velocity"),
+            std::string::npos);
+  EXPECT_NE(std::find(result.files.begin(), result.files.end(), snapshots / "t1.000.csv"),
+            result.files.end());
+  if (gnuplot_available()) {
+    EXPECT_EQ(result.snapshots.size(), 6u);
+    EXPECT_GT(fs::file_size(snapshots / "t1.000_material.png"), 5000u);
+  }
+
+  write_text(case_ / "post.toml", with_line(kPostToml, 9, "profile_times = [1.0]"));
+  result = postprocess(case_, case_ / "post", true);
+  EXPECT_EQ(result.snapshot_times.size(), 1u);
+  EXPECT_FALSE(fs::exists(snapshots / "t0.500.csv"));
+  EXPECT_TRUE(fs::exists(snapshots / "t1.000.csv"));
 }
 
 TEST_F(PostCase, AnEarlierPostIsOverwrittenOnlyWhenForced) {

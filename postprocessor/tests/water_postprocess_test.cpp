@@ -176,6 +176,38 @@ TEST_F(WaterCase, GaugeReferenceIsOverlaidInTheGaugesColours) {
   EXPECT_TRUE(written(result, "reference_gauge_2.csv"));
 }
 
+// G1 reads 0, e1 (about 0.02 m), 0 at 0, 0.25, 0.5 s; its reference rises later (0 until
+// 0.1 s, 0.019 m at 0.25 s). G2 has no reference, so no errors.
+TEST_F(WaterCase, GaugeErrorsAgainstTheReference) {
+  write_text(case_ / "gauges_reference.csv", "time,G1\n0,0\n0.1,0\n0.25,0.019\n0.5,0\n");
+  write_text(case_ / "post.toml",
+             std::string(kWaterPostToml) + "gauge_reference = \"gauges_reference.csv\"\n");
+  const PostResult result = postprocess(case_, case_ / "post", false);
+  ASSERT_EQ(result.errors.size(), 1u);
+  const ReferenceError& e = result.errors[0];
+  EXPECT_EQ(e.plot, "gauges.png");
+  EXPECT_EQ(e.series, "G1");
+  const double e1 = result.gauge_eta[0][1], e2 = result.gauge_eta[0][2];
+  EXPECT_NEAR(e1, 0.02, 1e-4);
+  // At 0.1 s the simulation is interpolated to 0.4 e1.
+  EXPECT_EQ(e.samples, 4);
+  EXPECT_NEAR(e.rms, std::sqrt((0.16 * e1 * e1 + (e1 - 0.019) * (e1 - 0.019) + e2 * e2) / 4),
+              1e-12);
+  EXPECT_NEAR(e.peak_error, e1 - 0.019, 1e-12);
+  EXPECT_NEAR(e.peak_error_relative, (e1 - 0.019) / 0.019, 1e-10);
+  // 10 % of 0.019 m: reached at 0.25 * 0.0019 / e1 (about 0.024 s) and 0.115 s.
+  EXPECT_NEAR(e.simulated_arrival, 0.25 * 0.0019 / e1, 1e-12);
+  EXPECT_NEAR(e.reference_arrival, 0.115, 1e-12);
+  EXPECT_NEAR(e.arrival_error, -0.091, 1e-3);
+
+  const std::string errors = read_text(case_ / "post" / "errors.csv");
+  EXPECT_EQ(std::count(errors.begin(), errors.end(), '\n'), 2);
+  EXPECT_EQ(errors.substr(errors.find('\n') + 1, 17), "gauges.png,G1,m,0");
+  EXPECT_NE(read_text(case_ / "post" / "gauges.gp").find(".'G1: RMS 0.00"), std::string::npos)
+      << read_text(case_ / "post" / "gauges.gp");
+  EXPECT_TRUE(written(result, "errors.csv"));
+}
+
 TEST_F(WaterCase, GaugeReferenceColumnThatNamesNoGaugeIsAnError) {
   write_text(case_ / "gauges_reference.csv", "time,G1,G3\n0.25,0.019,0.01\n");
   write_text(case_ / "post.toml",

@@ -28,6 +28,7 @@ struct PlotSeries {
 int csv_column(const std::filesystem::path& csv, const std::string& name);
 
 // Writes <png without extension>.gp and runs gnuplot on it (terminal pngcairo size 900,600).
+// A line break in `title` starts a new title line (e.g. the errors against the reference).
 // Returns true when the PNG was made. When gnuplot is not on PATH, warns once on stderr and
 // returns false; a gnuplot failure also returns false, with a warning naming the script.
 // `y_from_zero` starts the y axis at 0 (heights and thicknesses, whose zero means something).
@@ -37,5 +38,18 @@ bool plot_xy(const std::filesystem::path& png, const std::string& title, const s
 
 // True when an executable `gnuplot` is on PATH.
 bool gnuplot_available();
+
+// `text` as a gnuplot string expression: single-quoted (taken literally), with each line break
+// of `text` joined in as "\n", so a title can have several lines.
+std::string gnuplot_text(const std::string& text);
+
+// Writes `script` (a complete gnuplot script whose output is the PNG `png`, reading its data
+// by paths relative to the PNG's folder) to <png without extension>.gp and runs gnuplot on it
+// in that folder. Returns true when the PNG was made; false, with the warnings of plot_xy(),
+// when gnuplot is missing or fails.
+bool run_gnuplot_script(const std::filesystem::path& png, const std::string& script);
+
+// `file` relative to `folder` when possible (for data paths inside scripts), else absolute.
+std::string path_from(const std::filesystem::path& folder, const std::filesystem::path& file);
 
 }  // namespace lituya::post

@@ -19,6 +19,8 @@
 
 #include <Eigen/Core>
 
+#include "lituya/post/reference_error.hpp"
+
 namespace lituya::post {
 
 // post.toml, validated (format "lituya-post" version 1; see manuals/file-formats.md).
@@ -89,7 +91,8 @@ struct PointCloud {
   // Liquid points only (read_liquid_points): porosity n of the mixture the point is water
   // of, 1 for free water; its `volume` is the water volume, n times the mixture volume.
   std::vector<double> porosity;
-  int dimension = 2;  // 2: plane strain (z = 0), 3: flume with width along z
+  std::vector<double> speed;  // m/s, |velocity| (of the soil or of the water), when written
+  int dimension = 2;          // 2: plane strain (z = 0), 3: flume with width along z
 };
 // `dimension` 0 infers it: 2 when every z is 0, else 3. InputError on a missing or garbled
 // file.
@@ -232,6 +235,13 @@ struct PostResult {
   std::vector<double> crest_x, crest_eta, max_eta;  // leading wave (when asked for)
   std::vector<TimedSurface> surface_profiles;
 
+  // One entry per series drawn against a reference (runout, wall height, each gauge with
+  // reference data), as written to errors.csv.
+  std::vector<ReferenceError> errors;
+  // The snapshots (snapshot.hpp): the output times drawn, and the PNGs made.
+  std::vector<double> snapshot_times;
+  std::vector<std::filesystem::path> snapshots;
+
   std::vector<std::filesystem::path> files;  // everything written into the post folder
   bool plots_written = false;                // false when gnuplot is missing or failed
 };
@@ -243,6 +253,8 @@ struct PostResult {
 //   water: gauges.csv, gauges.png and the gauge reference copies (with gauges),
 //          leading_wave.csv, leading_wave.png (with leading_wave), surface_profiles.csv,
 //          surface_profiles.png;
+//   against reference data: errors.csv (reference_error.hpp), the errors also in the titles;
+//   with profile_times: snapshots/ (snapshot.hpp), the scene by material and by speed;
 //   always: the plots of plot_run_histories();
 // each PNG with its .gp script. Everything is validated before the folder is touched.
 PostResult postprocess(const std::filesystem::path& case_folder,
