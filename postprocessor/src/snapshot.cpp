@@ -194,6 +194,16 @@ SnapshotFiles draw_snapshots(const fs::path& folder, const std::vector<Snapshot>
   const Frame frame = common_frame(snapshots, default_radius);
   const double speed_top = round_up(max_speed);
   const std::string stage_text = stage.empty() ? "" : " (stage '" + stage + "')";
+  // Writes the script beside the picture and runs gnuplot on it.
+  auto draw = [&](const std::string& png, const std::string& script) {
+    result.files.push_back((folder / png).replace_extension(".gp"));
+    const bool made = run_gnuplot_script(folder / png, script);
+    if (made) {
+      result.files.push_back(folder / png);
+      result.pictures.push_back(folder / png);
+    }
+    result.plotted = made && result.plotted;
+  };
 
   for (size_t k = 0; k < snapshots.size(); ++k) {
     const Snapshot& s = snapshots[k];
@@ -238,13 +248,7 @@ SnapshotFiles draw_snapshots(const fs::path& folder, const std::vector<Snapshot>
         for (size_t i = 0; i < curves.size(); ++i)
           gp << curves[i] << (i + 1 < curves.size() ? ", \\\n" : "\n");
       }
-      result.files.push_back((folder / png).replace_extension(".gp"));
-      const bool made = run_gnuplot_script(folder / png, gp.str());
-      if (made) {
-        result.files.push_back(folder / png);
-        result.pictures.push_back(folder / png);
-      }
-      result.plotted = made && result.plotted;
+      draw(png, gp.str());
     }
 
     // By speed: one colour scale (0 to the largest speed of all snapshots, rounded up).
@@ -264,13 +268,7 @@ SnapshotFiles draw_snapshots(const fs::path& folder, const std::vector<Snapshot>
       } else {
         gp << "plot " << data << " skip 1 using 3:4:6:7 with circles lc palette notitle\n";
       }
-      result.files.push_back((folder / png).replace_extension(".gp"));
-      const bool made = run_gnuplot_script(folder / png, gp.str());
-      if (made) {
-        result.files.push_back(folder / png);
-        result.pictures.push_back(folder / png);
-      }
-      result.plotted = made && result.plotted;
+      draw(png, gp.str());
     }
   }
   return result;

@@ -188,6 +188,7 @@ SolverSettings read_solver_settings(const TomlTable& t) {
     t.fail("'pressure_projection_interval' must be a number of steps in [0, 1000000] (0 = off)",
            "pressure_projection_interval");
   s.pressure_projection_interval = static_cast<int>(interval);
+  s.pore_volume_projection = t.boolean_or("pore_volume_projection", s.pore_volume_projection);
   // Fractions of a minute are allowed: tests checkpoint a run of seconds.
   s.checkpoint_interval_minutes =
       t.number_in_or("checkpoint_interval_minutes", 0.0, 1e7, s.checkpoint_interval_minutes);
@@ -388,6 +389,7 @@ toml::table to_toml(const SolverSettings& s) {
                 {"max_velocity", s.max_velocity},
                 {"volumetric_smoothing", s.volumetric_smoothing},
                 {"pressure_projection_interval", s.pressure_projection_interval},
+                {"pore_volume_projection", s.pore_volume_projection},
                 {"checkpoint_interval_minutes", s.checkpoint_interval_minutes}};
   // Only the blend settings the scene gave: absent ones keep their automatic defaults.
   if (s.flip_fraction) t.insert("flip_fraction", *s.flip_fraction);

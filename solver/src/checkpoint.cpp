@@ -343,8 +343,8 @@ struct CheckpointAccess {
                  " values for " + std::to_string(n_nodes) + " nodes");
     // The projection sizes its work arrays with its solution (pressure_projection.cpp); their
     // values are not state (each projection overwrites them before use).
-    for (auto* v : {&p.rhs, &p.diagonal, &p.residual, &p.preconditioned, &p.direction, &p.product})
-      v->assign(n_nodes, 0.0);
+    p.rhs.assign(n_nodes, 0.0);
+    p.diagonal.assign(n_nodes, 0.0);
   }
 
   static void count(const Simulation<dim>& s, CheckpointHeader& h) {

@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lituya/solver/conjugate_gradient.hpp"
 #include "lituya/solver/simulation.hpp"
 
 namespace lituya::solver {
@@ -68,8 +69,8 @@ int Simulation<dim>::project_liquid_pressure() {
   ProjectionScratch& s = projection_;
   if (s.solution.size() != n_nodes) {
     s.solution.assign(n_nodes, 0.0);
-    for (auto* v : {&s.rhs, &s.diagonal, &s.residual, &s.preconditioned, &s.direction, &s.product})
-      v->assign(n_nodes, 0.0);
+    s.rhs.assign(n_nodes, 0.0);
+    s.diagonal.assign(n_nodes, 0.0);
   }
   LiquidPoints<dim>& liquid = water_.points;
   s.point_values.resize(liquid.size());
@@ -91,38 +92,9 @@ int Simulation<dim>::project_liquid_pressure() {
       s.solution[i] = 0;
     else if (s.solution[i] == 0)
       s.solution[i] = s.rhs[i] / s.diagonal[i];
-  apply(s.solution, s.product);
-  double rz = 0, rhs_norm = 0;
-  for (std::size_t i = 0; i < n_nodes; ++i) {
-    s.residual[i] = s.rhs[i] - s.product[i];
-    s.preconditioned[i] = s.diagonal[i] > 0 ? s.residual[i] / s.diagonal[i] : 0.0;
-    s.direction[i] = s.preconditioned[i];
-    rz += s.residual[i] * s.preconditioned[i];
-    rhs_norm += s.rhs[i] * s.rhs[i];
-  }
-  const double tolerance = 1e-16 * rhs_norm;  // relative residual 1e-8
-  int iteration = 0;
-  for (; iteration < 200; ++iteration) {
-    double rr = 0;
-    for (std::size_t i = 0; i < n_nodes; ++i) rr += s.residual[i] * s.residual[i];
-    if (rr <= tolerance) break;
-    apply(s.direction, s.product);
-    double pap = 0;
-    for (std::size_t i = 0; i < n_nodes; ++i) pap += s.direction[i] * s.product[i];
-    if (!(pap > 0)) break;
-    const double alpha = rz / pap;
-    double rz_new = 0;
-    for (std::size_t i = 0; i < n_nodes; ++i) {
-      s.solution[i] += alpha * s.direction[i];
-      s.residual[i] -= alpha * s.product[i];
-      s.preconditioned[i] = s.diagonal[i] > 0 ? s.residual[i] / s.diagonal[i] : 0.0;
-      rz_new += s.residual[i] * s.preconditioned[i];
-    }
-    const double beta = rz_new / rz;
-    rz = rz_new;
-    for (std::size_t i = 0; i < n_nodes; ++i)
-      s.direction[i] = s.preconditioned[i] + beta * s.direction[i];
-  }
+  const int iteration = detail::conjugate_gradient(
+      apply, [&](std::size_t i, double r) { return s.diagonal[i] > 0 ? r / s.diagonal[i] : 0.0; },
+      s.rhs, s.solution, s.cg, 1e-8, 200);
   gather_liquid(s.solution, s.point_values);
   const std::size_t n_liquid = liquid.size();
 #pragma omp parallel for num_threads(threads_) schedule(static)

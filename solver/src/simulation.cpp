@@ -315,7 +315,10 @@ void Simulation<dim>::step(double dt, double damping) {
   if (has_liquid_) {
     update_liquid_and_relocate(dt);
     const int interval = description_.solver.pressure_projection_interval;
-    if (interval > 0 && (step_count_ + 1) % interval == 0) project_liquid_pressure();
+    if (interval > 0 && (step_count_ + 1) % interval == 0) {
+      project_liquid_pressure();
+      if (description_.solver.pore_volume_projection) project_pore_water_volume();
+    }
   }
   ++step_count_;
 }

@@ -1,5 +1,5 @@
 // Sponge verification tank (README.md): still water h = 0.15 m deep over a flat bed from the
-// wall at x = 0 to the end wall at x = L = 3.1 m (tank_long.geo: 4.3 m, the same mesh up to
+// wall at x = 0 to the end wall at x = L = 3.1 m (tank_long.geo: 10 m, the same mesh up to
 // x = L and an extra piece beyond it). Near x = 0 the surface starts displaced by a Ricker
 // wavelet a (1 - 2 (x/s)^2) exp(-(x/s)^2), x < 3 s: a crest at the wall between two troughs
 // of its mirror image, with no net volume, so the wave it sends down the tank leaves no

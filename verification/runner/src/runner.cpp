@@ -21,6 +21,8 @@ namespace lituya::verify {
 // that needs them.
 void run_extremes(const CaseContext& context, CaseResult& result);
 void run_extremes_impact(const CaseContext& context, CaseResult& result);
+// verification/speed_accuracy (speed_accuracy.cpp).
+void run_speed_accuracy(const CaseContext& context, CaseResult& result);
 
 namespace {
 
@@ -42,6 +44,8 @@ const std::vector<CaseEntry>& all_cases() {
       {"case_c", "Case C: dry and saturated slides on rigid and erodible slopes", run_case_c},
       {"hydrostatic_tank", "Hydrostatic tank: still water stays still", run_hydrostatic_tank},
       {"dam_break", "Dam break on a dry bed against Ritter's solution", run_dam_break},
+      {"speed_accuracy", "Speed against accuracy: the dam break's error vs wall time per knob",
+       run_speed_accuracy},
       {"terzaghi", "Terzaghi 1D consolidation", run_terzaghi},
       {"seepage", "Seepage through a sand column (Darcy-Forchheimer)", run_seepage},
       {"sponge", "A long wave leaving a tank through a sponge zone", run_sponge},

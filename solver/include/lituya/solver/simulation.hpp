@@ -27,6 +27,7 @@
 
 #include "lituya/solver/boundary_conditions.hpp"
 #include "lituya/solver/case_description.hpp"
+#include "lituya/solver/conjugate_gradient.hpp"
 #include "lituya/solver/liquid_points.hpp"
 #include "lituya/solver/material_points.hpp"
 #include "lituya/solver/mesh.hpp"
@@ -131,6 +132,9 @@ class Simulation {
   }
   // Applies the liquid pressure projection now (pressure_projection.cpp); for tests.
   int project_pressure_for_test() { return project_liquid_pressure(); }
+  // Applies the pore water volume projection now (pore_volume_projection.cpp); for tests.
+  // Needs the nodal porosity of a step (or of liquid_to_nodes) before it.
+  int project_pore_volume_for_test() { return project_pore_water_volume(); }
   // Total number of points (solid + liquid), for throughput figures.
   std::size_t point_count() const { return solid_.points.size() + water_.points.size(); }
   // Bytes held by points, nodes and mesh (for the memory-per-point report).
@@ -185,6 +189,8 @@ class Simulation {
   void update_liquid_and_relocate(double dt);
   // Pressure-projection stabilisation (pressure_projection.cpp); returns CG iterations.
   int project_liquid_pressure();
+  // Pore water volume projection (pore_volume_projection.cpp); returns CG iterations.
+  int project_pore_water_volume();
   // sum_q V_q N_i(x_q) point_values_q at each node; the result lives in projection_.sums.
   const std::vector<double>& scatter_liquid(const std::vector<double>& point_values);
   void gather_liquid(const std::vector<double>& nodal, std::vector<double>& point_values) const;
@@ -221,11 +227,21 @@ class Simulation {
   // empty when the case has none, so the nodal update skips it (two_phase.cpp).
   std::vector<double> node_sponge_rate_;
   struct ProjectionScratch {
-    std::vector<double> solution, rhs, diagonal, residual, preconditioned, direction, product;
+    std::vector<double> solution, rhs, diagonal;
+    detail::ConjugateGradientScratch cg;
     std::vector<double> point_values;
     detail::NodalScatter<detail::ScalarSums> sums;
   };
   ProjectionScratch projection_;
+  // Scratch of the pore water volume projection (nothing in it outlives a call).
+  struct PoreVolumeScratch {
+    std::vector<char> wet_cell, unknown;
+    std::vector<double> rhs, diagonal, potential;
+    detail::ConjugateGradientScratch cg;
+    std::vector<double> cell_weight, node_weight;
+    std::vector<Vec> displacement;
+  };
+  PoreVolumeScratch pore_volume_;
   int pore_liquid_ = -1;  // the water material that fills the pores (drag, eq. 23)
   long step_count_ = 0;
   double next_time_step_ = 0;  // stable dt from the last stress update (for courant 1)

@@ -1,0 +1,36 @@
+#pragma once
+// The speed/accuracy study (verification/speed_accuracy): which run is the cheapest one that
+// is accurate enough, and how the cost scales with a knob. Pure functions, unit-tested.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lituya::verify {
+
+// One run of the study: the knob changed from the base setting and its value, the run's
+// error (dimensionless; NaN when the run failed), its wall time (s), and whether it may be
+// chosen at all (false: it broke a condition the error does not see, e.g. the water's volume).
+struct TradeRun {
+  std::string knob;
+  double value = 0;
+  double error = 0;
+  double wall_time = 0;
+  bool admissible = true;
+};
+
+// The run with the smallest wall time among the admissible ones whose error is at most
+// `max_error` (the bound included), restricted to runs of `knob` when it is not empty. Runs
+// whose error or wall time is not finite are never taken; of two equally fast runs, the more
+// accurate, then the first. Empty when no run qualifies.
+std::optional<std::size_t> cheapest_within(const std::vector<TradeRun>& runs, double max_error,
+                                           const std::string& knob = "");
+
+// The median of `values` (the mean of the two middle ones for an even count); NaN when empty.
+double median(std::vector<double> values);
+
+// The least-squares slope of log(y) against log(x): the exponent p of y ~ x^p. Pairs with a
+// non-positive or non-finite x or y are left out; NaN when fewer than two distinct x remain.
+double log_log_slope(const std::vector<double>& x, const std::vector<double>& y);
+
+}  // namespace lituya::verify

@@ -1,0 +1,52 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "lituya/verify/speed_accuracy.hpp"
+
+namespace lituya::verify {
+
+std::optional<std::size_t> cheapest_within(const std::vector<TradeRun>& runs, double max_error,
+                                           const std::string& knob) {
+  std::optional<std::size_t> best;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const TradeRun& r = runs[i];
+    if ((!knob.empty() && r.knob != knob) || !r.admissible) continue;
+    if (!std::isfinite(r.error) || !std::isfinite(r.wall_time) || r.error > max_error) continue;
+    if (!best || r.wall_time < runs[*best].wall_time ||
+        (r.wall_time == runs[*best].wall_time && r.error < runs[*best].error))
+      best = i;
+  }
+  return best;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double log_log_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  std::vector<double> lx, ly;
+  for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i)
+    if (std::isfinite(x[i]) && std::isfinite(y[i]) && x[i] > 0 && y[i] > 0) {
+      lx.push_back(std::log(x[i]));
+      ly.push_back(std::log(y[i]));
+    }
+  const double n = static_cast<double>(lx.size());
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < lx.size(); ++i) {
+    mx += lx[i] / n;
+    my += ly[i] / n;
+  }
+  double sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < lx.size(); ++i) {
+    sxx += (lx[i] - mx) * (lx[i] - mx);
+    sxy += (lx[i] - mx) * (ly[i] - my);
+  }
+  if (lx.size() < 2 || !(sxx > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return sxy / sxx;
+}
+
+}  // namespace lituya::verify
