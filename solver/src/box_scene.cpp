@@ -33,6 +33,30 @@ Material paper_water() {
   return m;
 }
 
+BoxScene<2> sand_bed_under_water(double grain_diameter) {
+  BoxScene<2> s;
+  s.domain_size = {0.4, 0.4};
+  s.cells = {10, 10};
+  s.block_min = {0.0, 0.0};
+  s.block_max = {0.4, 0.2};
+  s.material.name = "sand";
+  s.material.model = MaterialModel::kLinearElastic;
+  s.material.solid_density = 2650.0;
+  s.material.porosity = 0.4;
+  s.material.youngs_modulus = 1.0e7;
+  s.material.poisson_ratio = 0.3;
+  s.material.grain_diameter = grain_diameter;
+  s.gravity = {0.0, -9.81};
+  s.k0 = 0.5;
+  s.with_water = true;
+  s.water = paper_water();
+  s.water_min = {0.0, 0.0};
+  s.water_max = {0.4, 0.3};
+  for (const char* side : {"x-", "x+", "y-"})
+    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
+  return s;
+}
+
 namespace {
 // Points of the standard patterns in barycentric coordinates (equal volumes).
 template <int dim>

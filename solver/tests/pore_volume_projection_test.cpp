@@ -17,26 +17,8 @@ using namespace lituya::solver;
 // A sand bed 0.2 m thick under 0.1 m of free water in a box 0.4 m wide (10 x 10 cells of
 // 0.04 m), roller walls and bottom; `soil` false leaves out the sand (free water only).
 Simulation<2> bed_under_water(bool soil) {
-  BoxScene<2> s;
-  s.domain_size = {0.4, 0.4};
-  s.cells = {10, 10};
-  s.block_min = soil ? Eigen::Vector2d(0.0, 0.0) : Eigen::Vector2d(2.0, 2.0);
-  s.block_max = {0.4, 0.2};
-  s.material.name = "sand";
-  s.material.model = MaterialModel::kLinearElastic;
-  s.material.solid_density = 2650.0;
-  s.material.porosity = 0.4;
-  s.material.youngs_modulus = 1.0e7;
-  s.material.poisson_ratio = 0.3;
-  s.material.grain_diameter = 0.002;
-  s.gravity = {0.0, -9.81};
-  s.k0 = 0.5;
-  s.with_water = true;
-  s.water = paper_water();
-  s.water_min = {0.0, 0.0};
-  s.water_max = {0.4, 0.3};
-  for (const char* side : {"x-", "x+", "y-"})
-    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
+  BoxScene<2> s = sand_bed_under_water(0.002);
+  if (!soil) s.block_min = {2.0, 2.0};  // no cell centroid in the block: no sand
   Simulation<2> sim = make_box_simulation<2>(s);
   sim.step(1e-7, 0.0);  // the nodal porosity of eq. (5), which the projection reads
   return sim;

@@ -208,21 +208,7 @@ TEST(TwoPhase, SaturatedBedUnderWaterStaysAtRest) {
   // those nodes): 4.5 % at the points, 3.1 % at the interior nodes (3.4 % and 2.4 % without
   // projection). The mean error is 0.5 %. These measured values (2026-11-22) are held as
   // regression bounds (5 % points, 3.5 % nodes) so that it cannot get worse unnoticed.
-  BoxScene<2> s;
-  s.domain_size = {0.4, 0.4};
-  s.cells = {10, 10};
-  s.block_min = {0.0, 0.0};
-  s.block_max = {0.4, 0.2};
-  s.material = soil(0.002);
-  s.gravity = {0.0, -9.81};
-  s.k0 = 0.5;
-  s.with_water = true;
-  s.water = paper_water();
-  s.water_min = {0.0, 0.0};
-  s.water_max = {0.4, 0.3};
-  for (const char* side : {"x-", "x+", "y-"})
-    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
-  Simulation<2> sim = make_box_simulation<2>(s);
+  Simulation<2> sim = make_box_simulation<2>(sand_bed_under_water(0.002));
   sim.run_stage(dynamic_stage(0.3), nullptr);
   const double buoyant = 0.6 * 2650.0 - 0.6 * 1000.0;
   const double base = buoyant * 9.81 * 0.2;

@@ -48,6 +48,12 @@ BoundaryCondition box_condition(BoundaryType type, double friction = 0);
 // Water as in the paper's cases: rho_w = 1000 kg/m3, K_w = 2.15e7 Pa, mu = 1e-3 Pa s.
 Material paper_water();
 
+// A saturated sand bed 0.2 m thick under 0.1 m of still water in a 2D box 0.4 m wide and high
+// (10 x 10 cells), with hydrostatic pore pressure and buoyant K0 = 0.5 stress; roller walls
+// and bottom (sides "x-", "x+", "y-"). Sand: linear elastic, rho_s = 2650 kg/m3, n = 0.4,
+// E = 10 MPa, nu = 0.3, D_p = `grain_diameter`; water: paper_water().
+BoxScene<2> sand_bed_under_water(double grain_diameter);
+
 // A quasi-static stage named "settle" with heavy local damping (0.7) that ends when the
 // kinetic energy falls to `kinetic_energy_ratio` of its peak, with `boundaries` active: brings
 // a scene to equilibrium stresses before a release.
