@@ -317,11 +317,15 @@ void ProbeRecorder<dim>::sample(const Simulation<dim>& simulation, Site& site, d
     for (int d = 0; d < dim; ++d) x(d) = site.probe.position[static_cast<std::size_t>(d)];
     v = interpolate_probe(simulation, site.cell, site.shape, node_mesh_volume_, &site.patch);
   } else {
-    // Points keep their id but not necessarily their place in the arrays: found by id.
+    // Points keep their id but not necessarily their place in the arrays: found by id, looked
+    // for again only when the place it was last found at holds another point.
     auto find = [&](const auto& points) {
       const auto& ids = points.id;
-      const auto at = std::find(ids.begin(), ids.end(), static_cast<int>(site.probe.point_id));
-      return static_cast<std::size_t>(at - ids.begin());
+      const int id = static_cast<int>(site.probe.point_id);
+      if (site.point_index >= ids.size() || ids[site.point_index] != id)
+        site.point_index =
+            static_cast<std::size_t>(std::find(ids.begin(), ids.end(), id) - ids.begin());
+      return site.point_index;
     };
     if (site.probe.follows == Probe::Follows::kSolidPoint) {
       const MaterialPoints<dim>& points = simulation.points();

@@ -71,13 +71,7 @@ Measured run_one(const CaseContext& context, const Run& run) {
   const std::string variant = context.full ? "full" : "quick";
   const auto scene = context.source / ("scene_" + variant + "_" + run.name + ".toml");
   const auto folder = context.work / run.name;
-  const auto case_folder = folder / "case";
-  pre::preprocess(scene, case_folder, /*overwrite=*/true);
-  solver::SolveOptions options;
-  options.threads = context.threads;
-  options.overwrite = true;
-  options.keep_previous_output = false;  // the report is rebuilt each time: no output.previous
-  solver::solve_case(case_folder, options);
+  const auto case_folder = run_scene(context, scene, folder / "case");
   const post::PostResult r = post::postprocess(case_folder, folder / "post", /*overwrite=*/true);
   const post::PostSettings settings = post::read_post_settings(case_folder / "post.toml");
 

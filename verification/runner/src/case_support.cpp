@@ -33,16 +33,25 @@ void add_check(CaseResult& result, const std::string& quantity, const std::strin
   result.checks.push_back(c);
 }
 
-std::filesystem::path run_scene(const CaseContext& context) {
-  const auto scene = context.source / (context.full ? "scene_full.toml" : "scene_quick.toml");
-  const auto case_folder = context.work / "case";
-  pre::preprocess(scene, case_folder, /*overwrite=*/true);
+solver::SolveOptions report_solve_options(int threads) {
   solver::SolveOptions options;
-  options.threads = context.threads;
+  options.threads = threads;
   options.overwrite = true;
   options.keep_previous_output = false;  // the report is rebuilt each time: no output.previous
-  solver::solve_case(case_folder, options);
+  return options;
+}
+
+std::filesystem::path run_scene(const CaseContext& context, const std::filesystem::path& scene,
+                                const std::filesystem::path& case_folder) {
+  pre::preprocess(scene, case_folder, /*overwrite=*/true);
+  solver::solve_case(case_folder, report_solve_options(context.threads));
   return case_folder;
+}
+
+std::filesystem::path run_scene(const CaseContext& context) {
+  return run_scene(context,
+                   context.source / (context.full ? "scene_full.toml" : "scene_quick.toml"),
+                   context.work / "case");
 }
 
 std::vector<Frame> read_series(const std::filesystem::path& case_folder, const std::string& stage,

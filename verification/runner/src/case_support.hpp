@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "lituya/solver/solve.hpp"
+
 namespace lituya::verify {
 
 struct Check {
@@ -49,6 +51,14 @@ struct CaseContext {
 // Adds a check; tolerance is absolute.
 void add_check(CaseResult& result, const std::string& quantity, const std::string& unit,
                double measured, double reference, double tolerance);
+
+// How the cases solve: overwriting, without setting old output aside (the report is rebuilt
+// each time), on `threads` threads.
+solver::SolveOptions report_solve_options(int threads);
+
+// pre + solve of `scene` into `case_folder`; returns the case folder.
+std::filesystem::path run_scene(const CaseContext& context, const std::filesystem::path& scene,
+                                const std::filesystem::path& case_folder);
 
 // pre + solve of scene_<variant>.toml into <work>/case; returns the case folder.
 std::filesystem::path run_scene(const CaseContext& context);

@@ -37,13 +37,7 @@ struct Measured {
 Measured run_one(const CaseContext& context, const std::string& scene_name,
                  const std::string& folder_name, double cell_size, CaseResult& result) {
   const auto folder = context.work / folder_name;
-  const auto case_folder = folder / "case";
-  pre::preprocess(context.source / scene_name, case_folder, /*overwrite=*/true);
-  solver::SolveOptions options;
-  options.threads = context.threads;
-  options.overwrite = true;
-  options.keep_previous_output = false;  // the report is rebuilt each time
-  solver::solve_case(case_folder, options);
+  const auto case_folder = run_scene(context, context.source / scene_name, folder / "case");
   const auto post_folder = folder / "post";
   const post::PostResult r = post::postprocess(case_folder, post_folder, /*overwrite=*/true);
 

@@ -136,13 +136,9 @@ SceneOutcome run_one(const CaseContext& context, const Scene& scene,
   pre::preprocess(scene_file, case_folder, /*overwrite=*/true);
   const bool has_liquid = std::filesystem::exists(case_folder / "liquid_points.vtu");
 
-  solver::SolveOptions options;
-  options.threads = context.threads;
-  options.overwrite = true;
-  options.keep_previous_output = false;  // the report is rebuilt each time: no output.previous
   std::string stop;
   try {
-    solver::solve_case(case_folder, options);
+    solver::solve_case(case_folder, report_solve_options(context.threads));
   } catch (const RunError& e) {
     stop = e.what();
   }

@@ -76,10 +76,7 @@ RunRecord run_setting(const sweep::SceneText& scene, const std::vector<std::stri
   try {
     r.points =
         pre::preprocess(folder / "scene.toml", folder / "case", /*overwrite=*/true).liquid_points;
-    solver::SolveOptions options;
-    options.threads = 1;
-    options.overwrite = true;
-    options.keep_previous_output = false;
+    const solver::SolveOptions options = report_solve_options(1);
     for (int k = 0; k < repeats; ++k) {
       double wall = 0;
       long steps = 0;

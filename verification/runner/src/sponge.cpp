@@ -43,13 +43,7 @@ double gauge_depth(const std::vector<double>& volume, const std::vector<double>&
 }
 
 Record run_tank(const CaseContext& context, const std::string& scene, const std::string& name) {
-  const auto case_folder = context.work / name / "case";
-  pre::preprocess(context.source / scene, case_folder, /*overwrite=*/true);
-  solver::SolveOptions options;
-  options.threads = context.threads;
-  options.overwrite = true;
-  options.keep_previous_output = false;  // the report is rebuilt each time: no output.previous
-  solver::solve_case(case_folder, options);
+  const auto case_folder = run_scene(context, context.source / scene, context.work / name / "case");
   Record record;
   double still_crest = 0, still = 0;  // t = 0: the still water, before the wave arrives
   for (const Frame& frame : read_series(case_folder, "release", "liquid")) {

@@ -99,6 +99,7 @@ class ProbeRecorder {
     std::vector<unsigned char> patch;  // fixed probes: probe_patch() of `cell`
     long next_mark = 1;                // index of the next multiple of the interval to sample at
     double last_sample = -1;           // stage time of the last row of the running stage
+    std::size_t point_index = 0;       // point probes: where the point's id was last found
   };
   void sample(const Simulation<dim>& simulation, Site& site, double t);
   void history_row(const Simulation<dim>& simulation, double t);
