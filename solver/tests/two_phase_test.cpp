@@ -4,7 +4,9 @@
 // bed at rest under water, and threaded runs giving the same answer.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "lituya/common/input_error.hpp"
 #include "lituya/solver/box_scene.hpp"
@@ -452,6 +454,122 @@ TEST(PressureProjection, KeepsLinearFieldsAndIsAnOrthogonalProjection) {
     }
   }
   EXPECT_LE(energy_after, energy_before);
+}
+
+// The projection's assembled mass matrix (PointMassMatrix, conjugate_gradient.hpp) against the
+// matrix-free operator it replaced: a gather to the points and a scatter back,
+//     (M x)_I = sum_q V_q N_I(x_q) sum_J N_J(x_q) x_J,
+// for a random x, on points scattered at random over part of a box mesh (cells with several
+// points, one or none; nodes without water, which get no row). Also the lumped diagonal and
+// right-hand side, the same bits on one and on two threads, and the symmetric Gauss-Seidel
+// preconditioner the projection uses with it.
+template <int dim>
+void expect_assembled_mass_matrix_is_the_matrix_free_one(const Mesh<dim>& mesh,
+                                                         const Eigen::Matrix<double, dim, 1>& wet,
+                                                         int n_points) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  using Shape = typename Mesh<dim>::Shape;
+  std::mt19937 random(12345);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<int> cell;
+  std::vector<Shape> shape;
+  std::vector<double> volume, value;
+  for (int q = 0; q < n_points; ++q) {
+    Vec x;
+    for (int d = 0; d < dim; ++d) x(d) = wet(d) * unit(random);
+    Shape n;
+    const int c = mesh.locate_anywhere(x, n);
+    ASSERT_GE(c, 0);
+    cell.push_back(c);
+    shape.push_back(n);
+    volume.push_back(1e-4 * (0.5 + unit(random)));
+    value.push_back(1e4 * (unit(random) - 0.3));
+  }
+  const std::size_t n_nodes = mesh.node_count();
+  std::vector<double> x(n_nodes), mx(n_nodes, 0.0), lumped(n_nodes, 0.0), rhs(n_nodes, 0.0);
+  for (double& v : x) v = unit(random) - 0.5;
+  for (std::size_t q = 0; q < cell.size(); ++q) {
+    const auto& nodes = mesh.cell_nodes[static_cast<std::size_t>(cell[q])];
+    double at_point = 0;
+    for (int i = 0; i <= dim; ++i) at_point += shape[q](i) * x[static_cast<std::size_t>(nodes[i])];
+    for (int i = 0; i <= dim; ++i) {
+      const auto node = static_cast<std::size_t>(nodes[i]);
+      mx[node] += volume[q] * shape[q](i) * at_point;
+      lumped[node] += volume[q] * shape[q](i);
+      rhs[node] += volume[q] * shape[q](i) * value[q];
+    }
+  }
+  auto largest = [](const std::vector<double>& v) {
+    double m = 0;
+    for (double a : v) m = std::max(m, std::abs(a));
+    return m;
+  };
+
+  lituya::solver::detail::PointMassMatrix<dim> one, two;
+  std::vector<double> lumped_1, rhs_1, lumped_2, rhs_2;
+  one.set_mesh(mesh.cell_nodes, n_nodes);
+  two.set_mesh(mesh.cell_nodes, n_nodes);
+  one.assemble(mesh.cell_nodes, cell, shape, volume, value, 1, lumped_1, rhs_1);
+  two.assemble(mesh.cell_nodes, cell, shape, volume, value, 2, lumped_2, rhs_2);
+  const auto& rows = one.nodes();
+  ASSERT_GT(rows.size(), 10u);
+  ASSERT_LT(rows.size(), n_nodes);  // some nodes carry no water
+  std::vector<double> row_x(rows.size()), row_mx(rows.size()), row_mx_2(rows.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) row_x[r] = x[rows[r]];
+  one.matrix().multiply(row_x, row_mx, 1);
+  two.matrix().multiply(row_x, row_mx_2, 2);
+
+  std::vector<double> assembled(n_nodes, 0.0);
+  for (std::size_t r = 0; r < rows.size(); ++r) assembled[rows[r]] = row_mx[r];
+  for (std::size_t i = 0; i < n_nodes; ++i) {
+    EXPECT_LE(std::abs(assembled[i] - mx[i]), 1e-12 * largest(mx)) << "node " << i;
+    EXPECT_LE(std::abs(lumped_1[i] - lumped[i]), 1e-12 * largest(lumped)) << "node " << i;
+    EXPECT_LE(std::abs(rhs_1[i] - rhs[i]), 1e-12 * largest(rhs)) << "node " << i;
+  }
+  for (std::size_t r = 0; r < rows.size(); ++r) EXPECT_GT(lumped[rows[r]], 0.0);
+  EXPECT_EQ(lumped_1, lumped_2);
+  EXPECT_EQ(rhs_1, rhs_2);
+  EXPECT_EQ(one.matrix().value, two.matrix().value);
+  EXPECT_EQ(row_mx, row_mx_2);
+  // Symmetric to the last bit (the conjugate gradients assume it).
+  const auto& m = one.matrix();
+  for (std::size_t r = 0; r < m.rows(); ++r)
+    for (std::size_t k = m.row_start[r]; k < m.row_start[r + 1]; ++k) {
+      const auto c = static_cast<std::size_t>(m.column[k]);
+      const auto begin = m.column.begin() + static_cast<std::ptrdiff_t>(m.row_start[c]);
+      const auto end = m.column.begin() + static_cast<std::ptrdiff_t>(m.row_start[c + 1]);
+      const auto at = std::find(begin, end, static_cast<int>(r));
+      ASSERT_NE(at, end);
+      EXPECT_EQ(m.value[k], m.value[static_cast<std::size_t>(at - m.column.begin())]);
+    }
+  // The symmetric Gauss-Seidel preconditioner inverts P = (D + L) D^-1 (D + U).
+  std::vector<double> r(rows.size()), z(rows.size()), upper(rows.size()), p(rows.size());
+  for (double& v : r) v = unit(random) - 0.5;
+  m.symmetric_gauss_seidel(r, z);
+  for (std::size_t i = 0; i < m.rows(); ++i) {
+    ASSERT_EQ(static_cast<std::size_t>(m.column[m.diagonal[i]]), i);
+    upper[i] = 0;
+    for (std::size_t k = m.diagonal[i]; k < m.row_start[i + 1]; ++k)
+      upper[i] += m.value[k] * z[static_cast<std::size_t>(m.column[k])];
+  }
+  for (std::size_t i = 0; i < m.rows(); ++i) {
+    p[i] = upper[i];
+    for (std::size_t k = m.row_start[i]; k < m.diagonal[i]; ++k) {
+      const auto j = static_cast<std::size_t>(m.column[k]);
+      p[i] += m.value[k] * upper[j] / m.value[m.diagonal[j]];
+    }
+    EXPECT_NEAR(p[i], r[i], 1e-12) << "row " << i;
+  }
+}
+
+TEST(PressureProjection, AssembledMassMatrixIsTheMatrixFreeOperatorIn2D) {
+  const Mesh<2> mesh = make_box_mesh<2>({0.0, 0.0}, {1.0, 0.6}, {20, 12});
+  expect_assembled_mass_matrix_is_the_matrix_free_one<2>(mesh, {0.7, 0.35}, 600);
+}
+
+TEST(PressureProjection, AssembledMassMatrixIsTheMatrixFreeOperatorIn3D) {
+  const Mesh<3> mesh = make_box_mesh<3>({0.0, 0.0, 0.0}, {0.3, 0.3, 0.1}, {6, 6, 2});
+  expect_assembled_mass_matrix_is_the_matrix_free_one<3>(mesh, {0.2, 0.15, 0.1}, 500);
 }
 
 }  // namespace

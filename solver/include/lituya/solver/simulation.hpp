@@ -227,10 +227,12 @@ class Simulation {
   // empty when the case has none, so the nodal update skips it (two_phase.cpp).
   std::vector<double> node_sponge_rate_;
   struct ProjectionScratch {
-    std::vector<double> solution, rhs, diagonal;
+    std::vector<double> solution, rhs, diagonal;  // on all nodes (solution: the warm start)
     detail::ConjugateGradientScratch cg;
     std::vector<double> point_values;
     detail::NodalScatter<detail::ScalarSums> sums;
+    detail::PointMassMatrix<dim> mass;          // M assembled (pattern once per mesh)
+    std::vector<double> row_rhs, row_solution;  // the same on M's rows
   };
   ProjectionScratch projection_;
   // Scratch of the pore water volume projection (nothing in it outlives a call).
