@@ -9,6 +9,12 @@
 namespace lituya::solver {
 
 namespace {
+// Facets of one group whose normals differ by less than this angle (40 degrees) form one
+// smooth wall at their shared nodes; a sharper angle is a corner (a box's corner, the toe of a
+// slope): there the averaged normal would let the node slide along the bisector, out of one
+// wall and into the other.
+constexpr double kSmoothWallCosine = 0.766;
+
 // Unnormalised facet normal (its length is the facet's length or area).
 Eigen::Vector2d facet_normal(const Mesh<2>& mesh, const std::array<int, 2>& f) {
   const Eigen::Vector2d edge = mesh.node_position[f[1]] - mesh.node_position[f[0]];
@@ -41,7 +47,14 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
   for (std::size_t c = 0; c < mesh.cell_count(); ++c)
     for (int n : mesh.cell_nodes[c]) cells_of_node[n].push_back(static_cast<int>(c));
 
-  std::unordered_map<int, Vec> normal_sum, force_sum;
+  // Per node, the group's facet normals in clusters: facets that meet at less than
+  // kCornerAngle are one smooth wall (their normals are summed, weighted by facet size);
+  // facets at a sharper angle are a corner, where each wall keeps its own normal.
+  struct Wall {
+    Vec normal_sum;
+  };
+  std::unordered_map<int, std::vector<Wall>> walls;
+  std::unordered_map<int, Vec> force_sum;
   std::vector<int> order;
   Vec traction = Vec::Zero();
   for (std::size_t d = 0; d < bc.traction.size() && d < dim; ++d) traction(d) = bc.traction[d];
@@ -76,20 +89,49 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
     for (int n : mesh.cell_nodes[adjacent[0]]) centroid += mesh.node_position[n];
     centroid /= dim + 1;
     if (normal.dot(mesh.node_position[facet[0]] - centroid) < 0) normal = -normal;
+    const Vec direction = normal.normalized();
     for (int n : facet) {
-      auto [it, inserted] = normal_sum.try_emplace(n, Vec::Zero());
+      auto [it, inserted] = walls.try_emplace(n);
       if (inserted) order.push_back(n);
-      it->second += normal;
+      std::vector<Wall>& node_walls = it->second;
+      auto same = std::find_if(node_walls.begin(), node_walls.end(), [&](const Wall& w) {
+        return w.normal_sum.normalized().dot(direction) > kSmoothWallCosine;
+      });
+      if (same == node_walls.end())
+        node_walls.push_back(Wall{normal});
+      else
+        same->normal_sum += normal;
     }
   }
   std::sort(order.begin(), order.end());
   for (int n : order) {
-    constraint.nodes.push_back(n);
-    constraint.normal.push_back(normal_sum[n].normalized());
+    const std::vector<Wall>& node_walls = walls[n];
     // Each facet's normal has the facet's size as its length, and a linear facet shares its
     // area equally between its dim nodes (exact on a flat wall).
-    constraint.area.push_back(normal_sum[n].norm() / dim);
-    if (bc.type == BoundaryType::kTraction) constraint.force.push_back(force_sum[n]);
+    auto push = [&](const Vec& normal, double area) {
+      constraint.nodes.push_back(n);
+      constraint.normal.push_back(normal);
+      constraint.area.push_back(area);
+      if (bc.type == BoundaryType::kTraction) constraint.force.push_back(force_sum[n]);
+    };
+    if (bc.type == BoundaryType::kTraction) {
+      push(node_walls.front().normal_sum.normalized(), node_walls.front().normal_sum.norm() / dim);
+      continue;
+    }
+    // At a corner a roller allows only the motion tangential to every wall: the normals made
+    // orthonormal (Gram-Schmidt), so removing the component along each in turn is the exact
+    // projection. A contact wall keeps each wall's own normal (one-sided, with friction).
+    std::vector<Vec> basis;
+    for (const Wall& w : node_walls) {
+      Vec normal = w.normal_sum.normalized();
+      if (bc.type == BoundaryType::kRoller) {
+        for (const Vec& b : basis) normal -= normal.dot(b) * b;
+        if (normal.norm() < 1e-6) continue;
+        normal.normalize();
+        basis.push_back(normal);
+      }
+      push(normal, w.normal_sum.norm() / dim);
+    }
   }
   return constraint;
 }

@@ -1,0 +1,103 @@
+// Nodal velocity conditions built from a group's facets: a roller group that turns a corner
+// (a tank's bottom and side walls in one group) must hold the corner node in every wall's
+// normal direction, not only along the averaged normal.
+#include "lituya/solver/boundary_conditions.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <random>
+#include <vector>
+
+#include "lituya/solver/box_scene.hpp"
+#include "lituya/solver/simulation.hpp"
+
+namespace {
+
+using namespace lituya::solver;
+
+// The boundary facets of a unit box mesh that lie on one of the planes x_d = 0, d in `planes`.
+template <int dim>
+std::vector<std::array<int, dim>> facets_on_planes(const Mesh<dim>& mesh,
+                                                   const std::vector<int>& planes) {
+  std::vector<std::array<int, dim>> facets;
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c)
+    for (int skip = 0; skip <= dim; ++skip) {
+      std::array<int, dim> f;
+      for (int k = 0, j = 0; k <= dim; ++k)
+        if (k != skip) f[j++] = mesh.cell_nodes[c][k];
+      for (int d : planes) {
+        bool on = true;
+        for (int n : f) on = on && std::abs(mesh.node_position[n](d)) < 1e-12;
+        if (on) facets.push_back(f);
+      }
+    }
+  return facets;
+}
+
+template <int dim>
+Simulation<dim> unit_box() {
+  BoxScene<dim> scene;
+  scene.domain_size = Eigen::Matrix<double, dim, 1>::Constant(1.0);
+  scene.cells.fill(4);
+  scene.block_min = Eigen::Matrix<double, dim, 1>::Constant(0.25);
+  scene.block_max = Eigen::Matrix<double, dim, 1>::Constant(0.75);
+  scene.material.name = "elastic";
+  scene.material.model = MaterialModel::kLinearElastic;
+  scene.material.porosity = 0.4;
+  scene.material.solid_density = 2500;
+  scene.material.youngs_modulus = 1e6;
+  scene.material.poisson_ratio = 0.3;
+  scene.gravity.assign(dim, 0.0);
+  return make_box_simulation<dim>(scene);
+}
+
+// Apply a roller on the planes x_d = 0 (d in `planes`, one group) to random nodal velocities
+// and check every node of the group: the velocity component normal to each plane the node lies
+// on is zero, and the components along the planes are untouched.
+template <int dim>
+void check_roller_corner(const std::vector<int>& planes) {
+  auto sim = unit_box<dim>();
+  const auto& mesh = sim.mesh();
+  BoundaryCondition roller;
+  roller.name = "walls";
+  roller.group = "walls";
+  roller.type = BoundaryType::kRoller;
+  const NodalConstraint<dim> constraint =
+      make_constraint<dim>(roller, facets_on_planes<dim>(mesh, planes), mesh, "test");
+  std::vector<Eigen::Matrix<double, dim, 1>> velocity(mesh.node_count());
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (auto& v : velocity)
+    for (int d = 0; d < dim; ++d) v(d) = uniform(random);
+  const auto before = velocity;
+  apply_constraints<dim>({&constraint}, velocity, nullptr, false);
+  int corner_nodes = 0;
+  for (int n : constraint.nodes)
+    for (int d = 0; d < dim; ++d) {
+      const bool on_plane = std::find(planes.begin(), planes.end(), d) != planes.end() &&
+                            std::abs(mesh.node_position[n](d)) < 1e-12;
+      if (on_plane)
+        EXPECT_EQ(velocity[n](d), 0.0) << "node " << n << " component " << d;
+      else
+        EXPECT_NEAR(velocity[n](d), before[n](d), 1e-15) << "node " << n << " component " << d;
+      corner_nodes += d == 0 && std::abs(mesh.node_position[n](planes[0])) < 1e-12 &&
+                      std::abs(mesh.node_position[n](planes[1])) < 1e-12;
+    }
+  EXPECT_GT(corner_nodes, 0);  // the group does turn a corner
+}
+
+TEST(BoundaryConditions, RollerGroupHoldsATankCornerIn2D) {
+  check_roller_corner<2>({0, 1});
+}
+
+// 3D: the edge where two walls meet keeps only the motion along the edge; where three meet,
+// none.
+TEST(BoundaryConditions, RollerGroupHoldsABoxEdgeIn3D) {
+  check_roller_corner<3>({0, 1});
+}
+TEST(BoundaryConditions, RollerGroupHoldsABoxVertexIn3D) {
+  check_roller_corner<3>({0, 1, 2});
+}
+
+}  // namespace
