@@ -189,6 +189,8 @@ SolverSettings read_solver_settings(const TomlTable& t) {
            "pressure_projection_interval");
   s.pressure_projection_interval = static_cast<int>(interval);
   s.pore_volume_projection = t.boolean_or("pore_volume_projection", s.pore_volume_projection);
+  s.liquid_bulk_viscosity =
+      t.number_in_or("liquid_bulk_viscosity", 0.0, 1.0, s.liquid_bulk_viscosity);
   // Fractions of a minute are allowed: tests checkpoint a run of seconds.
   s.checkpoint_interval_minutes =
       t.number_in_or("checkpoint_interval_minutes", 0.0, 1e7, s.checkpoint_interval_minutes);
@@ -390,6 +392,7 @@ toml::table to_toml(const SolverSettings& s) {
                 {"volumetric_smoothing", s.volumetric_smoothing},
                 {"pressure_projection_interval", s.pressure_projection_interval},
                 {"pore_volume_projection", s.pore_volume_projection},
+                {"liquid_bulk_viscosity", s.liquid_bulk_viscosity},
                 {"checkpoint_interval_minutes", s.checkpoint_interval_minutes}};
   // Only the blend settings the scene gave: absent ones keep their automatic defaults.
   if (s.flip_fraction) t.insert("flip_fraction", *s.flip_fraction);

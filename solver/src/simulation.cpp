@@ -154,10 +154,9 @@ double Simulation<dim>::stable_time_step(double courant) const {
   for (std::size_t q = 0; q < n_liquid; ++q) {
     const MaterialModelData& water = materials_[liquid.material[q]];
     const double h = mesh_.cell_min_height[liquid.cell[q]];
-    // Sound speed plus the viscous (diffusive) limit 2 mu / (rho h).
-    const double speed = water.wave_speed + liquid.velocity[q].norm() +
-                         2.0 * water.viscosity / (water.liquid_density * h);
-    dt = std::min(dt, h / speed);
+    dt = std::min(dt, h / detail::liquid_signal_speed(
+                              description_.solver.liquid_bulk_viscosity, water.liquid_density,
+                              water.wave_speed, water.viscosity, liquid.velocity[q].norm(), h));
   }
   return courant * dt;
 }

@@ -97,4 +97,19 @@ std::string describe_fault(PointFault fault, const Vec& velocity, double max_vel
   return m.str();
 }
 
+// Artificial bulk viscosity of the water, zeta = beta rho_w c_w h (Pa s; scientific manual
+// 10.5): the linear artificial viscosity of shock-capturing codes, scaled so that the damping
+// rate of a sound wave one cell long is a fixed fraction beta of its frequency.
+inline double liquid_bulk_viscosity(double beta, double density, double wave_speed, double h) {
+  return beta * density * wave_speed * h;
+}
+
+// Signal speed that sets a liquid point's stable step h / speed: sound plus the flow, plus the
+// diffusive limit 2 (mu + zeta) / (rho h) of the shear and bulk viscosities.
+inline double liquid_signal_speed(double beta, double density, double wave_speed, double viscosity,
+                                  double speed, double h) {
+  return wave_speed + speed +
+         2.0 * (viscosity + liquid_bulk_viscosity(beta, density, wave_speed, h)) / (density * h);
+}
+
 }  // namespace lituya::solver::detail

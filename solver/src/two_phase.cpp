@@ -34,7 +34,9 @@
 //   rejected: averaging the divergence at the nodes (pumps energy into a FLIP run unless the
 //   force is built from the same nodal field, and then still drifts), starting each point from
 //   its cell's mean pressure (worse at rest: the exact field varies within a cell), and a
-//   bulk viscosity alpha rho c h div v (does not act on a mode that carries no velocity).
+//   bulk viscosity alpha rho c h div v (does not act on a mode that carries no velocity). The
+//   bulk viscosity is used, but for another purpose: it damps sound waves (see
+//   update_liquid_and_relocate).
 #include <omp.h>
 
 #include <Eigen/Dense>
@@ -298,11 +300,22 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
     liquid_flux_divergence_[q] = divergence;
     // Newtonian viscous stress mu (grad v + grad v^T) = 2 mu D (eq. 17 with eq. 18 read as
     // twice the strain rate D), stored in the engineering-shear Voigt layout as a stress.
-    const double mu = materials_[liquid.material[q]].viscosity;
+    const MaterialModelData& water = materials_[liquid.material[q]];
     const Voigt6 rate = strain_increment(l, 1.0);  // D_xx, D_yy, D_zz, 2 D_xy, ...
     Voigt6& tau = liquid.viscous_stress[q];
-    for (int k = 0; k < 3; ++k) tau(k) = 2.0 * mu * rate(k);
-    for (int k = 3; k < 6; ++k) tau(k) = mu * rate(k);
+    for (int k = 0; k < 3; ++k) tau(k) = 2.0 * water.viscosity * rate(k);
+    for (int k = 3; k < 6; ++k) tau(k) = water.viscosity * rate(k);
+    // Artificial bulk viscosity (scientific manual 10.5): zeta div(q) / n on the normal
+    // stresses, from the same flux divergence that compresses the water in eq. (8), so it
+    // resists exactly the motion that changes the pressure and vanishes in incompressible
+    // flow. Without it the weakly compressible water keeps every sound wave it is given (a
+    // still tank's corner started one that grew into sloshing once the PIC damping was
+    // weakened).
+    const double zeta =
+        liquid_bulk_viscosity(description_.solver.liquid_bulk_viscosity, water.liquid_density,
+                              water.wave_speed, mesh_.cell_min_height[cell]);
+    const double n = std::max(liquid.porosity[q], kMinimumPorosity);
+    for (int k = 0; k < dim; ++k) tau(k) += zeta * divergence / n;
   }
 
   FirstFault fault;
@@ -322,8 +335,9 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
       fault.note(q, kind);
     } else {
       const double h = mesh_.cell_min_height[liquid.cell[q]];
-      dt_next = std::min(dt_next, h / (water.wave_speed + speed +
-                                       2.0 * water.viscosity / (water.liquid_density * h)));
+      dt_next = std::min(dt_next, h / liquid_signal_speed(description_.solver.liquid_bulk_viscosity,
+                                                          water.liquid_density, water.wave_speed,
+                                                          water.viscosity, speed, h));
     }
   }
   next_time_step_ = dt_next;
@@ -341,7 +355,7 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
       // Water jets out of the impact zone are FLIP noise grown unchecked (user manual, 2.6):
       // a shorter liquid damping time is the first thing to try, the Courant number rarely.
       m << describe_fault(fault.kind, liquid.velocity[q], max_velocity_,
-                          "try a shorter [solver] liquid_pic_damping_time, e.g. half the one "
+                          "try a shorter [solver] liquid_pic_damping_time, e.g. a tenth of the one "
                           "in output/log.txt, or a smaller Courant number");
     throw RunError(m.str());
   }

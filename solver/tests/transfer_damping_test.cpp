@@ -25,7 +25,7 @@ TEST(TransferDamping, DefaultsAreMultiplesOfTheGridGravityTime) {
   const TransferDamping d = resolve_transfer_damping(none, 0.02, 9.81);
   const double grid_time = std::sqrt(0.02 / 9.81);  // 0.0452 s
   EXPECT_NEAR(d.solid.time, 3.0 * grid_time, 1e-12);
-  EXPECT_NEAR(d.liquid.time, 0.09 * grid_time, 1e-12);
+  EXPECT_NEAR(d.liquid.time, 30.0 * grid_time, 1e-12);
   // The FLIP share of a step is exp(-dt / tau): two half steps damp as much as one step.
   const double dt = 2.5e-5;
   EXPECT_NEAR(d.liquid.flip_share(dt / 2) * d.liquid.flip_share(dt / 2), d.liquid.flip_share(dt),
@@ -38,7 +38,7 @@ TEST(TransferDamping, GivenSettingsWin) {
   times.pic_damping_time = 0.5;
   const TransferDamping d = resolve_transfer_damping(times, 0.02, 9.81);
   EXPECT_DOUBLE_EQ(d.solid.time, 0.5);
-  EXPECT_NEAR(d.liquid.time, 0.09 * std::sqrt(0.02 / 9.81), 1e-12);  // still the default
+  EXPECT_NEAR(d.liquid.time, 30.0 * std::sqrt(0.02 / 9.81), 1e-12);  // still the default
 
   SolverSettings per_step;
   per_step.flip_fraction = 0.9;

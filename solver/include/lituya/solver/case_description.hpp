@@ -105,6 +105,12 @@ struct SolverSettings {
   // each soil node holds no more water than its pore volume (pore_volume_projection.cpp;
   // scientific manual 10.4). A pore can be partly empty (unsaturated), never over-full.
   bool pore_volume_projection = true;
+  // Artificial bulk viscosity of the water (scientific manual 10.5; not in the paper): a
+  // viscous pressure -zeta div(v) with zeta = liquid_bulk_viscosity * rho_w c_w h. It acts only
+  // on compression, so it damps the sound waves of the weakly compressible water (an artefact
+  // of a finite K_w; incompressible water has none) and leaves free-surface waves alone.
+  // 0 = off.
+  double liquid_bulk_viscosity = 0.1;
   // Wall time between two checkpoints within a stage (checkpoint.hpp), in minutes; a
   // checkpoint is also written at the end of every stage and when the run is asked to stop.
   // Half an hour loses little of a long run and costs little disk time. 0 = only those.
