@@ -47,13 +47,10 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
   for (std::size_t c = 0; c < mesh.cell_count(); ++c)
     for (int n : mesh.cell_nodes[c]) cells_of_node[n].push_back(static_cast<int>(c));
 
-  // Per node, the group's facet normals in clusters: facets that meet at less than
-  // kCornerAngle are one smooth wall (their normals are summed, weighted by facet size);
-  // facets at a sharper angle are a corner, where each wall keeps its own normal.
-  struct Wall {
-    Vec normal_sum;
-  };
-  std::unordered_map<int, std::vector<Wall>> walls;
+  // Per node, the group's facet normals summed per wall (weighted by facet size): facets
+  // that meet at an angle whose cosine exceeds kSmoothWallCosine are one smooth wall; at a
+  // sharper angle (a corner) each wall keeps its own sum.
+  std::unordered_map<int, std::vector<Vec>> walls;
   std::unordered_map<int, Vec> force_sum;
   std::vector<int> order;
   Vec traction = Vec::Zero();
@@ -93,44 +90,48 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
     for (int n : facet) {
       auto [it, inserted] = walls.try_emplace(n);
       if (inserted) order.push_back(n);
-      std::vector<Wall>& node_walls = it->second;
-      auto same = std::find_if(node_walls.begin(), node_walls.end(), [&](const Wall& w) {
-        return w.normal_sum.normalized().dot(direction) > kSmoothWallCosine;
+      std::vector<Vec>& node_walls = it->second;
+      auto same = std::find_if(node_walls.begin(), node_walls.end(), [&](const Vec& wall) {
+        return wall.normalized().dot(direction) > kSmoothWallCosine;
       });
       if (same == node_walls.end())
-        node_walls.push_back(Wall{normal});
+        node_walls.push_back(normal);
       else
-        same->normal_sum += normal;
+        *same += normal;
     }
   }
   std::sort(order.begin(), order.end());
   for (int n : order) {
-    const std::vector<Wall>& node_walls = walls[n];
+    const std::vector<Vec>& node_walls = walls[n];
     // Each facet's normal has the facet's size as its length, and a linear facet shares its
     // area equally between its dim nodes (exact on a flat wall).
-    auto push = [&](const Vec& normal, double area) {
+    auto push = [&](const Vec& normal_sum, const Vec& normal) {
       constraint.nodes.push_back(n);
       constraint.normal.push_back(normal);
-      constraint.area.push_back(area);
+      constraint.area.push_back(normal_sum.norm() / dim);
       if (bc.type == BoundaryType::kTraction) constraint.force.push_back(force_sum[n]);
     };
-    if (bc.type == BoundaryType::kTraction) {
-      push(node_walls.front().normal_sum.normalized(), node_walls.front().normal_sum.norm() / dim);
-      continue;
-    }
-    // At a corner a roller allows only the motion tangential to every wall: the normals made
-    // orthonormal (Gram-Schmidt), so removing the component along each in turn is the exact
-    // projection. A contact wall keeps each wall's own normal (one-sided, with friction).
-    std::vector<Vec> basis;
-    for (const Wall& w : node_walls) {
-      Vec normal = w.normal_sum.normalized();
-      if (bc.type == BoundaryType::kRoller) {
+    if (bc.type == BoundaryType::kRoller) {
+      // At a corner a roller allows only the motion tangential to every wall: the normals
+      // made orthonormal (Gram-Schmidt), so removing the component along each in turn is the
+      // exact projection.
+      std::vector<Vec> basis;
+      for (const Vec& wall : node_walls) {
+        Vec normal = wall.normalized();
         for (const Vec& b : basis) normal -= normal.dot(b) * b;
         if (normal.norm() < 1e-6) continue;
         normal.normalize();
         basis.push_back(normal);
+        push(wall, normal);
       }
-      push(normal, w.normal_sum.norm() / dim);
+    } else if (bc.type == BoundaryType::kContact) {
+      // A contact wall keeps each wall's own normal (one-sided, with friction).
+      for (const Vec& wall : node_walls) push(wall, wall.normalized());
+    } else {
+      // The other types do not use the direction of the wall: one entry per node.
+      Vec sum = Vec::Zero();
+      for (const Vec& wall : node_walls) sum += wall;
+      push(sum, sum.normalized());
     }
   }
   return constraint;

@@ -341,10 +341,8 @@ struct CheckpointAccess {
     if (p.solution.size() != n_nodes)
       in.damaged("the projection's nodal solution has " + std::to_string(p.solution.size()) +
                  " values for " + std::to_string(n_nodes) + " nodes");
-    // The projection sizes its work arrays with its solution (pressure_projection.cpp); their
-    // values are not state (each projection overwrites them before use).
-    p.rhs.assign(n_nodes, 0.0);
-    p.diagonal.assign(n_nodes, 0.0);
+    // The projection's other arrays are work arrays: each projection sizes and fills them
+    // (pressure_projection.cpp), so they are not state.
   }
 
   static void count(const Simulation<dim>& s, CheckpointHeader& h) {
