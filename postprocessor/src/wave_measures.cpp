@@ -1,9 +1,20 @@
 // The water surface read off the liquid points: its elevation at wave gauges, its profile
 // along the flume, and the leading wave crest on that profile.
+//
+// A column of the flume (a gauge's window, a profile bin) is read as a water fraction that
+// varies with height: each liquid point stands for a square (a cube in 3D) of its spacing,
+// filled with water at volume / spacing^d (1 for free water, the porosity for pore water),
+// and counts with the share of its width that lies in the column. The surface is the level
+// from which the column is (three quarters) full downwards, raised by the water that stands
+// above that level spread over the column. So a point riding a little above its neighbours
+// lifts the surface by its own share of the column, not by its full height, and a drop of
+// spray adds its volume, not its elevation: the highest point's top (the former reading)
+// jumped with single points and made crest records spiky on fine meshes.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <vector>
 
 #include "lituya/post/postprocess.hpp"
 
@@ -13,36 +24,128 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The top of a liquid point: its centre plus half its spacing, the same rule the slide
-// thickness uses, so a column of whole points reads the height of the water it stands for.
-double top_of(const PointCloud& liquid, size_t i) {
-  return liquid.position[i].y() + 0.5 * point_spacing(liquid, i);
+// A column counts as full where its water fraction reaches this share of its fullest level
+// (of 1 for free water). Below a half the reading would take a single point standing on a
+// full row two points wide for water; at 1 any gap between disordered points would count.
+constexpr double kFullShare = 0.75;
+
+// The part of one point that lies in a column: its vertical extent and the fraction of the
+// column's cross-section it fills there.
+struct Footprint {
+  double bottom, top, fraction;
+};
+
+// The horizontal extent of the flume across the gauge line in 3D (z), from the liquid points'
+// own extent; 1 in 2D, where the column is a slice of unit thickness.
+double flume_width(const PointCloud& liquid) {
+  if (liquid.dimension != 3) return 1.0;
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (size_t i = 0; i < liquid.position.size(); ++i) {
+    const double half = 0.5 * point_spacing(liquid, i);
+    low = std::min(low, liquid.position[i].z() - half);
+    high = std::max(high, liquid.position[i].z() + half);
+  }
+  return high > low ? high - low : 1.0;
 }
+
+// A column [left, right) of the flume and the points that belong to it (those whose centre
+// lies in it; a point belongs to one bin or gauge window, as the old reading had it).
+class Column {
+ public:
+  Column(double left, double right, double flume_width)
+      : left_(left), right_(right), cross_section_(flume_width * (right - left)) {}
+
+  void add(const PointCloud& liquid, size_t i) {
+    const Eigen::Vector3d& p = liquid.position[i];
+    const double s = point_spacing(liquid, i);
+    if (!(s > 0)) {  // no volume: only its centre is known
+      highest_centre_ = std::max(highest_centre_, p.y());
+      return;
+    }
+    const double overlap = std::min(p.x() + 0.5 * s, right_) - std::max(p.x() - 0.5 * s, left_);
+    if (!(overlap > 0)) return;
+    const int d = liquid.dimension == 3 ? 3 : 2;
+    const double fill = liquid.volume[i] / std::pow(s, d);  // porosity for pore water
+    const double depth = d == 3 ? s : 1.0;                  // across the flume
+    footprints_.push_back(
+        {p.y() - 0.5 * s, p.y() + 0.5 * s, fill * overlap * depth / cross_section_});
+  }
+
+  bool empty() const { return footprints_.empty() && std::isinf(highest_centre_); }
+
+  // The surface elevation (absolute), see the file comment.
+  double surface() {
+    if (footprints_.empty()) return highest_centre_;
+    // Walking down from the top: +fraction at a footprint's top, -fraction at its bottom.
+    events_.clear();
+    for (const Footprint& f : footprints_) {
+      events_.push_back({f.top, f.fraction});
+      events_.push_back({f.bottom, -f.fraction});
+    }
+    std::sort(events_.begin(), events_.end(),
+              [](const Event& a, const Event& b) { return a.y > b.y; });
+    // Levels: events closer than a billionth of the column's width are one level, so that a
+    // point's bottom and the top of the point below it (equal but for rounding) do not make
+    // the column look doubly full, or empty, in between.
+    const double same_level = 1e-9 * (right_ - left_);
+    auto next_level = [&](size_t& k, double& fraction) {
+      const double y = events_[k].y;
+      for (; k < events_.size() && events_[k].y > y - same_level; ++k)
+        fraction += events_[k].change;
+      return y;
+    };
+    // The fullest level, capped at 1: free water is full at 1 even where disordered points
+    // overlap; a column of pore water only (a saturated deposit) is full at its porosity.
+    double fraction = 0, fullest = 0;
+    for (size_t k = 0; k < events_.size();) {
+      next_level(k, fraction);
+      fullest = std::max(fullest, fraction);
+    }
+    fullest = std::min(fullest, 1.0);
+    double above = 0;  // water standing above the current level, as a height of full column
+    fraction = 0;
+    for (size_t k = 0; k < events_.size();) {
+      const double y = next_level(k, fraction);
+      if (fraction >= kFullShare * fullest * (1 - 1e-12))
+        return std::max(y + above / fullest, highest_centre_);
+      if (k < events_.size()) above += fraction * (y - events_[k].y);
+    }
+    return highest_centre_;  // not reached: the fullest level is at least kFullShare full
+  }
+
+ private:
+  struct Event {
+    double y, change;
+  };
+  double left_, right_, cross_section_;
+  double highest_centre_ = -std::numeric_limits<double>::infinity();
+  std::vector<Footprint> footprints_;
+  std::vector<Event> events_;
+};
 
 }  // namespace
 
 double gauge_elevation(const PointCloud& liquid, double gauge_x, double half_width,
                        double still_water_level) {
-  double top = -std::numeric_limits<double>::infinity();
-  bool wet = false;
-  for (size_t i = 0; i < liquid.position.size(); ++i) {
-    if (!(std::abs(liquid.position[i].x() - gauge_x) <= half_width)) continue;
-    wet = true;
-    top = std::max(top, top_of(liquid, i));
-  }
-  return wet ? top - still_water_level : kNaN;
+  Column column(gauge_x - half_width, gauge_x + half_width, flume_width(liquid));
+  for (size_t i = 0; i < liquid.position.size(); ++i)
+    if (std::abs(liquid.position[i].x() - gauge_x) <= half_width) column.add(liquid, i);
+  return column.empty() ? kNaN : column.surface() - still_water_level;
 }
 
 std::vector<SurfaceBin> surface_profile(const PointCloud& liquid, double origin, double bin_width,
                                         double still_water_level) {
-  std::map<long long, double> top;  // bin -> highest point top
+  const double width = flume_width(liquid);
+  std::map<long long, Column> columns;
   for (size_t i = 0; i < liquid.position.size(); ++i) {
     const double x = liquid.position[i].x();
     if (!std::isfinite(x)) continue;
     const auto k = static_cast<long long>(std::floor((x - origin) / bin_width));
-    auto [bin, inserted] = top.try_emplace(k, top_of(liquid, i));
-    if (!inserted) bin->second = std::max(bin->second, top_of(liquid, i));
+    const double left = origin + static_cast<double>(k) * bin_width;
+    columns.try_emplace(k, left, left + bin_width, width).first->second.add(liquid, i);
   }
+  std::map<long long, double> top;  // bin -> surface elevation
+  for (auto& [k, column] : columns) top[k] = column.surface();
   std::vector<SurfaceBin> profile;
   if (top.empty()) return profile;
   auto centre = [&](long long k) { return origin + (static_cast<double>(k) + 0.5) * bin_width; };
@@ -90,6 +193,35 @@ LeadingWave find_leading_wave(const std::vector<SurfaceBin>& profile, double fro
     }
   }
   return wave;
+}
+
+WaveCrest first_wave_crest(const std::vector<double>& time, const std::vector<double>& eta,
+                           double onset) {
+  std::vector<double> t, e;  // the samples with water at the gauge
+  for (size_t i = 0; i < eta.size() && i < time.size(); ++i)
+    if (std::isfinite(eta[i])) {
+      t.push_back(time[i]);
+      e.push_back(eta[i]);
+    }
+  WaveCrest crest;
+  size_t k = 0;
+  while (k < e.size() && !(e[k] > onset)) ++k;
+  if (k == e.size()) return crest;
+  size_t highest = k;
+  for (; k < e.size() && !(e[k] < 0); ++k)
+    if (e[k] > e[highest]) highest = k;
+  crest.complete = k < e.size();
+  crest.time = t[highest];
+  crest.height = e[highest];
+  if (highest > 0 && highest + 1 < e.size()) {
+    const double curvature = e[highest - 1] - 2 * e[highest] + e[highest + 1];
+    const double step = 0.5 * (t[highest + 1] - t[highest - 1]);
+    if (curvature < 0) {
+      const double shift = 0.5 * step * (e[highest - 1] - e[highest + 1]) / curvature;
+      crest.time += std::clamp(shift, -0.5 * step, 0.5 * step);
+    }
+  }
+  return crest;
 }
 
 }  // namespace lituya::post

@@ -3,6 +3,7 @@
 // case with both a slide and water.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <gtest/gtest.h>
 
@@ -87,8 +88,9 @@ TEST_F(WaterCase, GaugesLeadingWaveAndSurfaceProfiles) {
   // Half-width inferred from the point volumes: sqrt(0.005^2).
   EXPECT_NEAR(result.gauge_half_width, 0.005, 1e-15);
 
-  // gauges.csv: at the crest the window's highest point is the crest (within 1e-4 m); away
-  // from the crest the water is still (the Gaussian is below 1e-6 m 0.3 m away).
+  // gauges.csv: at the crest the window holds the two columns 0.0025 m either side of it,
+  // whose mean top is within 1e-4 m of the crest; away from the crest the water is still
+  // (the Gaussian is below 1e-6 m 0.3 m away).
   EXPECT_EQ(read_text(case_ / "post" / "gauges.csv").substr(0, 13), "time,G1,G2\n0,");
   const auto gauges = read_csv_rows(case_ / "post" / "gauges.csv");
   ASSERT_EQ(gauges.size(), 3u);
@@ -104,15 +106,19 @@ TEST_F(WaterCase, GaugesLeadingWaveAndSurfaceProfiles) {
   EXPECT_NEAR(gauges[0][1], 0.0, 1e-12);  // still water reads exactly 0
 
   // leading_wave.csv: no crest in still water; then the crest within one bin (0.01 m) of
-  // its true position, and its height.
+  // its true position, and its height: the bins start at 0.3 and are 0.01 m wide, so the
+  // crest is at a bin's edge and that bin reads the mean of the columns 0.0025 and 0.0075 m
+  // from it, 0.62 % of the height low (1 - (e^(-0.5 (0.05)^2) + e^(-0.5 (0.15)^2)) / 2).
   const auto leading = read_csv_rows(case_ / "post" / "leading_wave.csv");
   ASSERT_EQ(leading.size(), 3u);
   EXPECT_TRUE(std::isnan(leading[0][1]) && std::isnan(leading[0][2]));
   EXPECT_NEAR(leading[0][3], 0.0, 1e-12);
   for (int k = 1; k < 3; ++k) {
     EXPECT_NEAR(leading[k][1], kCrestX[k], 0.01) << "t = " << kTimes[k];
-    EXPECT_NEAR(leading[k][2], kCrestHeight[k], 1e-4) << "t = " << kTimes[k];
-    EXPECT_NEAR(leading[k][3], kCrestHeight[k], 1e-4) << "t = " << kTimes[k];
+    const double bin_mean =
+        0.5 * kCrestHeight[k] * (std::exp(-0.5 * 0.05 * 0.05) + std::exp(-0.5 * 0.15 * 0.15));
+    EXPECT_NEAR(leading[k][2], bin_mean, 1e-9) << "t = " << kTimes[k];
+    EXPECT_NEAR(leading[k][3], bin_mean, 1e-9) << "t = " << kTimes[k];
     EXPECT_NEAR(result.crest_x[k], kCrestX[k], 0.01);
   }
 
@@ -224,8 +230,8 @@ TEST_F(WaterCase, GaugeReferenceColumnThatNamesNoGaugeIsAnError) {
 }
 
 TEST_F(WaterCase, DefaultGaugeNamesAndAGivenHalfWidth) {
-  // Without names the columns are "x=<position>". A half-width of 0.05 m takes in the crest
-  // of the t = 0.5 s wave from x = 0.71: the highest point within 0.05 m is the crest.
+  // Without names the columns are "x=<position>". A half-width of 0.05 m spans 20 whole
+  // columns of points, [0.66, 0.76], up the flank of the t = 0.5 s wave to its crest at 0.75.
   write_text(case_ / "post.toml", with_line(with_line(kWaterPostToml, 5, "gauge_half_width = 0.05"),
                                             4, "gauges = [0.45, 0.71]"));
   const PostResult result = postprocess(case_, case_ / "post", false);
@@ -233,8 +239,15 @@ TEST_F(WaterCase, DefaultGaugeNamesAndAGivenHalfWidth) {
   EXPECT_EQ(read_text(case_ / "post" / "gauges.csv").substr(0, 21), "time,x=0.45,x=0.71\n0,");
   const auto gauges = read_csv_rows(case_ / "post" / "gauges.csv");
   ASSERT_EQ(gauges.size(), 3u);
-  // With the default 0.005 m window it would read the wave's flank at 0.71, 0.0109 m.
-  EXPECT_NEAR(gauges[2][2], 0.015, 1e-4);
+  // A window that wide reads the level below which three quarters of it are full (the 15th
+  // highest of the 20 column tops), raised by the water above that level spread over the
+  // window: here 0.0108 m (the mean of the tops is 0.0102 m, the highest 0.0150 m).
+  std::vector<double> tops;
+  for (int i = 0; i < 20; ++i) tops.push_back(gaussian(0.6625 + 0.005 * i, 0.75, 0.015, 0.05));
+  std::sort(tops.begin(), tops.end(), std::greater<>());
+  double expected = tops[14];
+  for (int i = 0; i < 14; ++i) expected += (tops[i] - tops[14]) / 20;
+  EXPECT_NEAR(gauges[2][2], expected, 1e-9);
 }
 
 TEST_F(WaterCase, GaugeWithoutWaterIsABlankCell) {

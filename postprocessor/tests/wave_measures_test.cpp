@@ -2,6 +2,7 @@
 // a sine wave, a leading crest ahead of a higher hump with noise on its flank.
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -61,6 +62,48 @@ TEST(WaterSurface, SineWaveAtGaugesWithinTheWindowSlope) {
   }
   EXPECT_NEAR(gauge_elevation(water, 0.125, kH, kStill), A, 1e-4);
   EXPECT_NEAR(gauge_elevation(water, 0.375, kH, kStill), -A, 1e-4);
+}
+
+// A gauge at the boundary between two columns with half-width h holds those two columns
+// whole, half of its width each.
+TEST(WaterSurface, APointAboveItsNeighboursLiftsTheSurfaceByItsShare) {
+  PointCloud water;
+  add_water(water, 0.0, 0.1, 0.0, kH, [](double) { return kStill; });
+  const double gauge = 0.05;           // between the columns centred at 0.0475 and 0.0525
+  size_t top = water.position.size();  // the top point of the column at 0.0525
+  for (size_t i = 0; i < water.position.size(); ++i)
+    if (std::abs(water.position[i].x() - (gauge + 0.5 * kH)) < 1e-9 &&
+        (top == water.position.size() || water.position[i].y() > water.position[top].y()))
+      top = i;
+  ASSERT_NEAR(water.position[top].y(), kStill - 0.5 * kH, 1e-12);
+  // Raised by 0.6 h: half the column is water up to 0.6 h higher, so the surface rises by
+  // 0.3 h (the highest point's top, the former reading, by 0.6 h).
+  water.position[top].y() += 0.6 * kH;
+  EXPECT_NEAR(gauge_elevation(water, gauge, kH, kStill), 0.3 * kH, 1e-12);
+  // A drop of spray far above the gauge adds its volume spread over the window, h^2 over a
+  // width 2 h: a height h / 2 (the former reading: 10.5 h).
+  PointCloud spray = water;
+  spray.position[top].y() -= 0.6 * kH;
+  spray.position.emplace_back(gauge, kStill + 10 * kH, 0.0);
+  spray.volume.push_back(kH * kH);
+  spray.material.push_back(0);
+  spray.id.push_back(static_cast<int>(spray.id.size()));
+  EXPECT_NEAR(gauge_elevation(spray, gauge, kH, kStill), 0.5 * kH, 1e-12);
+}
+
+TEST(WaterSurface, PoreWaterAloneReadsTheTopOfItsDeposit) {
+  // A saturated deposit standing 0.02 m above still water beside free water: its column
+  // holds pore water only (fraction n), full at n, so it reads the deposit's top; the free
+  // water column next to it reads its own surface.
+  constexpr double n = 0.4;
+  PointCloud water;
+  add_water(water, 0.0, 0.05, 0.0, kH, [](double) { return kStill + 0.02; });
+  water.porosity.assign(water.position.size(), n);
+  for (double& v : water.volume) v *= n;
+  add_water(water, 0.05, 0.1, 0.0, kH, [](double) { return kStill; });
+  water.porosity.resize(water.position.size(), 1.0);
+  EXPECT_NEAR(gauge_elevation(water, 0.0225, kH, kStill), 0.02, 1e-12);
+  EXPECT_NEAR(gauge_elevation(water, 0.0775, kH, kStill), 0.0, 1e-12);
 }
 
 TEST(WaterSurface, NoLiquidInTheWindowIsNaN) {
@@ -142,7 +185,8 @@ TEST(SurfaceProfile, BinsAnchoredOnTheOriginWithGapsAsNaN) {
     } else if (bin.x > 0.305 && bin.x < 0.495) {
       EXPECT_TRUE(std::isnan(bin.eta)) << "x = " << bin.x;
     } else if (bin.x > 0.51) {
-      // The highest column of the bin is its most downstream one, < 0.005 m ahead.
+      // The bin's columns lie within 0.005 m of its centre, and its surface is between
+      // their tops.
       EXPECT_NEAR(bin.eta, 0.01 * bin.x, 0.01 * 0.005 + 1e-12) << "x = " << bin.x;
     }
   }
@@ -161,6 +205,11 @@ class LeadingWaveProfile : public ::testing::Test {
     if (x >= 1.23 && x < 1.24) eta += 0.003;  // exactly the bin [1.23, 1.24)
     return kStill + eta;
   }
+  // A bin of width 2 h starting at `left` holds two columns of points, half of it each: it
+  // reads the mean of their tops.
+  static double bin_reading(double left) {
+    return 0.5 * (surface(left + 0.5 * kH) + surface(left + 1.5 * kH)) - kStill;
+  }
   void SetUp() override { add_water(water_, 0.0, 2.0, 0.0, kH, surface); }
   PointCloud water_;
 };
@@ -174,7 +223,11 @@ TEST_F(LeadingWaveProfile, CrestIsTheMostDownstreamMaximumOverTwoBins) {
   const LeadingWave wave = find_leading_wave(profile, 0.0, 0.002);
   EXPECT_NEAR(wave.crest_x, 1.205, 1e-9);  // the bin centre; analytically 1.205
   EXPECT_NEAR(wave.crest_eta, 0.02, 1e-4);
-  EXPECT_NEAR(wave.max_eta, 0.05, 1e-4);
+  EXPECT_NEAR(wave.crest_eta, bin_reading(1.2), 1e-12);
+  // The hump's top bins [0.29, 0.30) and [0.30, 0.31) read 0.0497 m, the mean of columns
+  // 0.0025 and 0.0075 m from its crest.
+  EXPECT_NEAR(wave.max_eta, bin_reading(0.3), 1e-12);
+  EXPECT_NEAR(wave.max_eta, 0.05, 4e-4);
 }
 
 TEST_F(LeadingWaveProfile, StartingBeyondTheCrestFindsTheRippleAboveTheFloor) {
@@ -183,13 +236,15 @@ TEST_F(LeadingWaveProfile, StartingBeyondTheCrestFindsTheRippleAboveTheFloor) {
   const auto profile = surface_profile(water_, 1.4, 2 * kH, kStill);
   const LeadingWave wave = find_leading_wave(profile, 1.4, 0.002);
   EXPECT_NEAR(wave.crest_x, 1.8, 2 * kH);
-  EXPECT_NEAR(wave.crest_eta, 0.004, 2e-5);
-  EXPECT_NEAR(wave.max_eta, 0.004, 2e-5);
+  // Bins [1.79, 1.80) and [1.80, 1.81) read the same, the mean of columns 0.0025 and
+  // 0.0075 m from the ripple's crest.
+  EXPECT_NEAR(wave.crest_eta, bin_reading(1.8), 1e-10);
+  EXPECT_NEAR(wave.max_eta, bin_reading(1.8), 1e-10);
   // With a 5 mm floor nothing downstream of 1.4 m is a wave.
   const LeadingWave none = find_leading_wave(profile, 1.4, 0.005);
   EXPECT_TRUE(std::isnan(none.crest_x));
   EXPECT_TRUE(std::isnan(none.crest_eta));
-  EXPECT_NEAR(none.max_eta, 0.004, 2e-5);
+  EXPECT_NEAR(none.max_eta, bin_reading(1.8), 1e-10);
 }
 
 TEST(LeadingWave, StillWaterAndNoWaterHaveNoCrest) {
@@ -209,7 +264,35 @@ TEST(LeadingWave, WaterPiledAgainstTheEndWallIsACrest) {
   add_water(water, 0.0, 1.0, 0.0, kH, [](double x) { return kStill + 0.03 * x; });
   const LeadingWave wave = find_leading_wave(surface_profile(water, 0.0, 0.01, kStill), 0.0, 0.002);
   EXPECT_NEAR(wave.crest_x, 0.995, 1e-9);
-  EXPECT_NEAR(wave.crest_eta, 0.03 * 0.9975, 1e-12);
+  // The mean of the bin's two columns (tops at 0.9925 and 0.9975), the surface at its centre.
+  EXPECT_NEAR(wave.crest_eta, 0.03 * 0.995, 1e-12);
+}
+
+TEST(FirstWaveCrest, IsTheHighestSampleOfTheFirstWaveNotItsFirstWiggle) {
+  // No water first (NaN), a ripple under the 1 mm onset, then the first wave: a wiggle on its
+  // rising flank (0.020 -> 0.019), its crest 0.030 at 0.6 s, a dip of its plateau, its fall
+  // below still water at 1.0 s; then a higher second wave.
+  const std::vector<double> t{0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1};
+  const std::vector<double> eta{NAN,   0.0005, 0.004, 0.020, 0.019,  0.025,
+                                0.030, 0.028,  0.029, 0.010, -0.002, 0.050};
+  const WaveCrest crest = first_wave_crest(t, eta, 0.001);
+  EXPECT_TRUE(crest.complete);
+  EXPECT_DOUBLE_EQ(crest.height, 0.030);
+  // Parabola through (0.5, 0.025), (0.6, 0.030), (0.7, 0.028): its top is 0.3 / 1.4 of a
+  // sample after 0.6 s.
+  EXPECT_NEAR(crest.time, 0.6 + 0.1 * 0.5 * (0.025 - 0.028) / (0.025 - 0.060 + 0.028), 1e-12);
+  EXPECT_NEAR(crest.time, 0.6214286, 1e-7);
+}
+
+TEST(FirstWaveCrest, BelowTheOnsetIsNoWaveAndARiseCutOffIsIncomplete) {
+  const WaveCrest none = first_wave_crest({0, 1, 2, 3}, {0.0002, 0.0009, 0.0004, 0.0}, 0.001);
+  EXPECT_TRUE(std::isnan(none.time) && std::isnan(none.height));
+  EXPECT_FALSE(none.complete);
+  // Still rising at the end of the record: its last sample, not complete.
+  const WaveCrest rising = first_wave_crest({0, 1, 2, 3}, {0.0, 0.01, 0.02, 0.03}, 0.001);
+  EXPECT_DOUBLE_EQ(rising.height, 0.03);
+  EXPECT_DOUBLE_EQ(rising.time, 3.0);
+  EXPECT_FALSE(rising.complete);
 }
 
 }  // namespace

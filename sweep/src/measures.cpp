@@ -9,6 +9,7 @@
 
 #include "lituya/common/csv_writer.hpp"
 #include "lituya/common/input_error.hpp"
+#include "lituya/post/postprocess.hpp"
 
 namespace lituya::sweep {
 
@@ -200,28 +201,6 @@ CsvTable read_csv(const std::filesystem::path& file) {
   return table;
 }
 
-Crest first_crest(const std::vector<double>& time, const std::vector<double>& eta) {
-  std::vector<double> t, e;
-  for (size_t i = 0; i < eta.size() && i < time.size(); ++i)
-    if (std::isfinite(eta[i])) {
-      t.push_back(time[i]);
-      e.push_back(eta[i]);
-    }
-  if (e.empty()) return {};
-  const double eta_max = *std::max_element(e.begin(), e.end());
-  const double threshold = std::max(kCrestFloor, kCrestFraction * eta_max);
-  const auto n = static_cast<std::ptrdiff_t>(e.size());
-  for (std::ptrdiff_t k = 0; k < n; ++k) {
-    if (!(e[k] > threshold)) continue;
-    bool crest = true;
-    for (std::ptrdiff_t j = std::max<std::ptrdiff_t>(0, k - kCrestHalfWindow);
-         j <= std::min(n - 1, k + kCrestHalfWindow); ++j)
-      crest = crest && e[k] >= e[j];
-    if (crest) return {t[k], e[k]};
-  }
-  return {};
-}
-
 double take_measure(const Measure& measure, const std::filesystem::path& post_folder) {
   const std::filesystem::path file = post_folder / measure.csv;
   const CsvTable table = read_csv(file);
@@ -236,7 +215,8 @@ double take_measure(const Measure& measure, const std::filesystem::path& post_fo
       return best;
     }
     case Reduction::kFirstCrest:
-      return first_crest(table.column("time", file.string()), values).height;
+      return post::first_wave_crest(table.column("time", file.string()), values, kCrestOnset)
+          .height;
   }
   return NAN;
 }

@@ -26,35 +26,13 @@ PostContent post_of(const std::string& post_table) {
   return post_content(toml::parse("[post]\n" + post_table));
 }
 
-TEST(FirstCrest, TakesTheFirstMaximumAboveTheThresholdNotAWiggleOrTheHighest) {
-  // No water first (blank), a wiggle under 10 % of the highest eta, a small wiggle on the
-  // rising flank that is not the highest within 2 samples, the first crest (0.030 at 0.5 s),
-  // a trough, and a higher second crest (0.050 at 0.9 s).
-  const std::vector<double> t{0.0, 0.1, 0.2, 0.3, 0.35, 0.4, 0.45, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
-  const std::vector<double> eta{NAN,   0.004, 0.003, 0.020, 0.019, 0.025, 0.028,
-                                0.030, 0.010, 0.005, 0.020, 0.050, 0.040};
-  const Crest crest = first_crest(t, eta);
-  EXPECT_DOUBLE_EQ(crest.time, 0.5);
-  EXPECT_DOUBLE_EQ(crest.height, 0.030);
-}
-
-TEST(FirstCrest, HonoursTheOneMillimetreFloorAndPlateaus) {
-  // Everything under 1 mm: no crest.
-  const Crest none = first_crest({0, 1, 2, 3}, {0.0002, 0.0009, 0.0004, 0.0});
-  EXPECT_TRUE(std::isnan(none.time));
-  EXPECT_TRUE(std::isnan(none.height));
-  // A plateau: its first sample. A record that still rises at its end: its last sample.
-  EXPECT_DOUBLE_EQ(first_crest({0, 1, 2, 3, 4}, {0.0, 0.01, 0.02, 0.02, 0.0}).time, 2.0);
-  EXPECT_DOUBLE_EQ(first_crest({0, 1, 2, 3}, {0.0, 0.01, 0.02, 0.03}).time, 3.0);
-}
-
 TEST(Measures, ReadFromThePostTables) {
   const fs::path post = post_folder("tables");
   std::ofstream(post / "gauges.csv") << "time,G1,G2\n"
                                         "0,,0\n"
                                         "0.1,0.002,0.010\n"
                                         "0.2,0.012,0.030\n"
-                                        "0.3,0.008,0.020\n"
+                                        "0.3,-0.001,0.020\n"
                                         "0.4,0.009,0.025\n"
                                         "0.5,0.015,0.024\n"
                                         "0.6,0.011,0.021\n"
@@ -74,7 +52,9 @@ TEST(Measures, ReadFromThePostTables) {
   ASSERT_EQ(measures.size(), 6u);
   EXPECT_EQ(measures[0].name, "gauge_first_crest:G1");
   EXPECT_EQ(measures[1].name, "gauge_first_crest:G2");
-  EXPECT_DOUBLE_EQ(take_measure(measures[0], post), 0.012);  // 0.2 s, before the higher 0.015
+  // G1's first wave ends at 0.3 s (below still water): its crest is 0.012, not the later 0.015.
+  // G2 never falls below still water: its first wave is the whole record.
+  EXPECT_DOUBLE_EQ(take_measure(measures[0], post), 0.012);
   EXPECT_DOUBLE_EQ(take_measure(measures[1], post), 0.030);
   EXPECT_DOUBLE_EQ(take_measure(measures[2], post), 0.030);
   EXPECT_DOUBLE_EQ(take_measure(measures[3], post), 0.031);

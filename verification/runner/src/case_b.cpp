@@ -1,49 +1,13 @@
 // Case B of the reference paper: the first wave crest at the gauges X1 and X2
 // (verification/case_b/README.md).
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "case_support.hpp"
 #include "lituya/post/postprocess.hpp"
 
 namespace lituya::verify {
-
-namespace {
-
-struct Crest {
-  double time = NAN, height = NAN;
-};
-
-// The first crest of a gauge record: the first sample of at least `min_height` that is as high
-// as every sample within `window` on either side, with a full window after it (a rise cut off
-// by the end of the record is no crest). Its time is refined by a parabola through the sample
-// and its two neighbours; its height is the sample's.
-Crest first_crest(const std::vector<double>& time, const std::vector<double>& eta,
-                  double min_height, double window) {
-  const std::size_t n = std::min(time.size(), eta.size());
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!(eta[k] >= min_height) || time[k] > time[n - 1] - window) continue;
-    bool highest = true;
-    for (std::size_t j = 0; j < n && highest; ++j)
-      if (std::abs(time[j] - time[k]) <= window && std::isfinite(eta[j]) && eta[j] > eta[k])
-        highest = false;
-    if (!highest) continue;
-    Crest c{time[k], eta[k]};
-    if (k > 0 && k + 1 < n && std::isfinite(eta[k - 1]) && std::isfinite(eta[k + 1])) {
-      const double curvature = eta[k - 1] - 2 * eta[k] + eta[k + 1];
-      const double h = 0.5 * (time[k + 1] - time[k - 1]);
-      if (curvature < 0) {
-        const double shift = 0.5 * h * (eta[k - 1] - eta[k + 1]) / curvature;
-        c.time += std::clamp(shift, -0.5 * h, 0.5 * h);
-      }
-    }
-    return c;
-  }
-  return {};
-}
-
-}  // namespace
 
 void run_case_b(const CaseContext& context, CaseResult& result) {
   const double g = 9.81, h0 = 0.15;
@@ -53,9 +17,17 @@ void run_case_b(const CaseContext& context, CaseResult& result) {
   const post::PostResult r = post::postprocess(case_folder, post_folder, /*overwrite=*/true);
   if (r.gauge_eta.size() != 2) throw std::runtime_error("case_b: post.toml must name 2 gauges");
 
-  const double min_height = 0.005, window = 0.05;
-  const Crest c1 = first_crest(r.liquid_time, r.gauge_eta[0], min_height, window);
-  const Crest c2 = first_crest(r.liquid_time, r.gauge_eta[1], min_height, window);
+  // The first wave at each gauge: from its first sample 5 mm above still water to the record's
+  // next fall below it (post::first_wave_crest). A wave still standing at the end of the run
+  // has no crest yet (NaN: the checks fail).
+  const double onset = 0.005;
+  auto first_crest = [&](const std::vector<double>& eta) {
+    post::WaveCrest c = post::first_wave_crest(r.liquid_time, eta, onset);
+    if (!c.complete) c.time = c.height = NAN;
+    return c;
+  };
+  const post::WaveCrest c1 = first_crest(r.gauge_eta[0]);
+  const post::WaveCrest c2 = first_crest(r.gauge_eta[1]);
   write_csv(context.work / "first_crests.csv", "gauge_x,first_crest_time,first_crest_height",
             {{x1, c1.time, c1.height}, {x2, c2.time, c2.height}});
 

@@ -174,10 +174,16 @@ struct GaugeReference {
 GaugeReference read_gauge_reference(const std::filesystem::path& csv,
                                     const std::vector<std::string>& gauge_names);
 
-// Free surface at a wave gauge: the highest top (y + half point spacing, see point_spacing)
-// of the liquid points whose x lies within half_width of gauge_x (in 3D at any z), minus
-// still_water_level. NaN when no liquid point is in that column. A point's top rather than its
-// centre is the surface, so still water made of whole points reads exactly 0.
+// Free surface at a wave gauge, minus still_water_level, read over the column of the liquid
+// points whose x lies within half_width of gauge_x (in 3D at any z). Each point stands for a
+// square (cube) of its spacing (see point_spacing), filled with water at volume / spacing^d,
+// and counts with the share of its width inside the column. The surface is the highest level
+// at which the column is three quarters full (of 1, or of its fullest level when it holds
+// only pore water or spray), raised by the water above that level spread over the column.
+// So still water made of whole points reads exactly 0, a point standing above its neighbours
+// lifts the surface by its share of the column and a drop of spray by its volume, not by
+// their height. Points without a volume count with their centre only. NaN when no liquid
+// point is in that column.
 double gauge_elevation(const PointCloud& liquid, double gauge_x, double half_width,
                        double still_water_level);
 
@@ -208,6 +214,22 @@ struct LeadingWave {
 };
 LeadingWave find_leading_wave(const std::vector<SurfaceBin>& profile, double from_x,
                               double min_height);
+
+// The crest of the first wave of a gauge record eta(t), by the zero up-crossing definition of
+// a wave: the wave starts at the first sample above `onset` (m above still water; ripples of
+// still water stay below it) and lasts until the record next falls below still water
+// (eta < 0); its crest is its highest sample. The time is refined by a parabola through that
+// sample and its two neighbours (by at most half a sample). Samples with NaN eta (no water at
+// the gauge) are left out. `complete` is false when the record ends before the wave does (its
+// crest may be still to come). time and height NaN when no sample exceeds `onset`.
+// A wiggle on the rising flank, or a dip of the crest's plateau, is inside the wave and
+// changes nothing: a "first local maximum" would stop on it.
+struct WaveCrest {
+  double time = NAN, height = NAN;
+  bool complete = false;
+};
+WaveCrest first_wave_crest(const std::vector<double>& time, const std::vector<double>& eta,
+                           double onset);
 
 struct TimedProfile {
   double requested_time;  // from profile_times

@@ -4,7 +4,7 @@
 //
 //   gauge_max[:GAUGE]          highest eta at the gauge over the run (gauges.csv)
 //   gauge_first_crest[:GAUGE]  height of the first wave crest at the gauge (gauges.csv; the
-//                              rule is first_crest() below)
+//                              rule is at kCrestOnset below)
 //   leading_wave_max           highest crest_height of the leading wave (leading_wave.csv)
 //   front_travel_final         front_travel at the last output (runout.csv)
 //   front_travel_max           highest front_travel (runout.csv)
@@ -66,19 +66,10 @@ struct CsvTable {
 };
 CsvTable read_csv(const std::filesystem::path& file);
 
-// The first wave crest of a gauge record eta(t); samples with NaN eta (no water at the gauge)
-// are left out. With eta_max the highest eta of the record, a crest is a sample whose eta
-// exceeds max(1 mm, 10 % of eta_max) and is at least as high as every sample within
-// 2 samples on either side (so a wiggle on the rising flank of the wave is not a crest).
-// The first crest is the earliest. NaN time and height when there is none (the water never
-// rose more than 1 mm).
-struct Crest {
-  double time = NAN, height = NAN;
-};
-inline constexpr double kCrestFloor = 0.001;   // m
-inline constexpr double kCrestFraction = 0.1;  // of the record's highest eta
-inline constexpr int kCrestHalfWindow = 2;     // samples on either side
-Crest first_crest(const std::vector<double>& time, const std::vector<double>& eta);
+// gauge_first_crest is the height of post::first_wave_crest() (the highest sample of the
+// first wave, from its first sample above kCrestOnset to the record's next fall below still
+// water), NaN when the water never rose kCrestOnset above still water.
+inline constexpr double kCrestOnset = 0.001;  // m
 
 // The measure's value for the run whose post folder is `post_folder`. InputError naming the
 // file when the table or its column is missing.
