@@ -29,6 +29,7 @@ constexpr double kWaterDensity = 1000.0;  // rho_w, kg/m3
 constexpr double kGrainDensity = 2650.0;  // rho_s, kg/m3
 constexpr double kPorosity = 0.4;         // n0
 
+constexpr double kWaterBulkModulus = 2.0e6;  // Pa, as in kWaterMaterial
 const std::string kWaterMaterial = R"(
 [[material]]
 name = "water"
@@ -100,7 +101,8 @@ LiquidArrays read_liquid_points(const fs::path& file, std::size_t expected_point
   return a;
 }
 
-// Every liquid point lies in its cell, at rest, with mass = rho_w * volume.
+// Every liquid point lies in its cell, at rest, with mass = rho_w (1 + p / K_w) volume: water
+// compressed to its pressure.
 void check_points_in_cells_at_rest(const LiquidArrays& a, const fs::path& geometry_file,
                                    int dimension) {
   auto geometry = read_vtu(geometry_file);
@@ -111,7 +113,9 @@ void check_points_in_cells_at_rest(const LiquidArrays& a, const fs::path& geomet
     for (double b : barycentric(geometry, cell, a.grid->GetPoint(p), dimension))
       EXPECT_GT(b, -1e-12);
     for (int k = 0; k < 3; ++k) EXPECT_EQ(a.velocity->GetComponent(p, k), 0.0);
-    EXPECT_NEAR(a.mass->GetComponent(p, 0), kWaterDensity * a.volume->GetComponent(p, 0),
+    EXPECT_NEAR(a.mass->GetComponent(p, 0),
+                kWaterDensity * (1.0 + a.pressure->GetComponent(p, 0) / kWaterBulkModulus) *
+                    a.volume->GetComponent(p, 0),
                 1e-12 * a.mass->GetComponent(p, 0));
   }
 }
@@ -148,10 +152,20 @@ TEST(Water, HydrostaticTank2D) {
   const LiquidArrays a =
       read_liquid_points(case_folder / "liquid_points.vtu", summary.liquid_points);
   ASSERT_TRUE(a.material && a.volume && a.mass && a.pressure && a.velocity && a.cell);
-  // Free water: porosity 1, so the points' water volumes tile the tank and weigh rho_w each.
+  // Free water: porosity 1, so the points' water volumes tile the tank. Each weighs what
+  // water compressed to its pressure weighs, rho_w (1 + p / K_w) V, so that the solver's
+  // volume m / (rho_w (1 + p / K_w)) is the seeded one; over the tank the mean pressure is
+  // rho_w g 0.25 m exactly (points symmetric about mid-depth in every column).
   const double area = 1.0 * 0.5;
   EXPECT_NEAR(sum_of(a.volume), area, 1e-12 * area);
-  EXPECT_NEAR(sum_of(a.mass), kWaterDensity * area, 1e-12 * kWaterDensity * area);
+  const double mean_compression = 1.0 + kWaterDensity * kGravity * 0.25 / kWaterBulkModulus;
+  EXPECT_NEAR(sum_of(a.mass), kWaterDensity * area * mean_compression,
+              1e-12 * kWaterDensity * area);
+  for (vtkIdType p = 0; p < a.grid->GetNumberOfPoints(); ++p)
+    EXPECT_NEAR(a.mass->GetComponent(p, 0),
+                kWaterDensity * (1.0 + a.pressure->GetComponent(p, 0) / kWaterBulkModulus) *
+                    a.volume->GetComponent(p, 0),
+                1e-12 * kWaterDensity * a.volume->GetComponent(p, 0));
   // The pressure integral is exact for a horizontal free surface: p = rho_w g (0.5 - y) up to
   // roundoff.
   const double bottom_pressure = kWaterDensity * kGravity * 0.5;
@@ -178,7 +192,8 @@ TEST(Water, TankAtZeroPressure) {
 }
 
 TEST(Water, HydrostaticCube3D) {
-  // The unit cube of tetrahedra full of water: p = rho_w g (1 - y), mass rho_w * 1 m3.
+  // The unit cube of tetrahedra full of water: p = rho_w g (1 - y), mass rho_w (1 + p / K_w)
+  // summed over 1 m3: rho_w (1 + rho_w g 0.5 m / K_w) when the points' mean depth is 0.5 m.
   TempFolder folder;
   const std::string regions = kWaterMaterial +
                               "\n[[region]]\ngroup = \"block\"\nmaterial = "
@@ -188,7 +203,13 @@ TEST(Water, HydrostaticCube3D) {
   const LiquidArrays a =
       read_liquid_points(folder / "case" / "liquid_points.vtu", summary.liquid_points);
   ASSERT_TRUE(a.mass && a.pressure);
-  EXPECT_NEAR(sum_of(a.mass), kWaterDensity, 1e-12 * kWaterDensity);
+  double weighted_depth = 0;  // sum of V (1 - y)
+  for (vtkIdType p = 0; p < a.grid->GetNumberOfPoints(); ++p)
+    weighted_depth += a.volume->GetComponent(p, 0) * (1.0 - a.grid->GetPoint(p)[1]);
+  EXPECT_NEAR(weighted_depth, 0.5, 1e-12);  // the cube's centroid depth, exact for tetrahedra
+  EXPECT_NEAR(sum_of(a.mass),
+              kWaterDensity * (1.0 + kWaterDensity * kGravity * 0.5 / kWaterBulkModulus),
+              1e-9 * kWaterDensity);
   for (vtkIdType p = 0; p < a.grid->GetNumberOfPoints(); ++p)
     EXPECT_NEAR(a.pressure->GetComponent(p, 0),
                 kWaterDensity * kGravity * (1.0 - a.grid->GetPoint(p)[1]),
@@ -237,9 +258,15 @@ TEST(Water, SaturatedLayerUnderFreeWater) {
   // layer; free water rho_w over the 0.2 m above it.
   const double layer = 1.0 * 0.3, free_water = 1.0 * 0.2;
   const double skeleton_mass = (1 - kPorosity) * kGrainDensity * layer;
-  const double water_mass = kWaterDensity * (kPorosity * layer + free_water);
+  // The water is compressed to its pressure, p = rho_w g (0.5 - y) (below): the free water's
+  // mean depth is 0.1 m, the pore water's 0.35 m.
+  auto compressed = [](double depth) {
+    return 1.0 + kWaterDensity * kGravity * depth / kWaterBulkModulus;
+  };
+  const double water_mass =
+      kWaterDensity * (kPorosity * layer * compressed(0.35) + free_water * compressed(0.1));
   EXPECT_NEAR(sum_of(solid_mass), skeleton_mass, 1e-12 * skeleton_mass);
-  EXPECT_NEAR(sum_of(a.mass), water_mass, 1e-12 * water_mass);
+  EXPECT_NEAR(sum_of(a.mass), water_mass, 1e-9 * water_mass);
 
   // The soil region comes first in both sets: liquid point p < solid_count is the pore water
   // of solid point p, at the same position in the same cell, with n0 of its volume.
@@ -251,8 +278,10 @@ TEST(Water, SaturatedLayerUnderFreeWater) {
     const double mixture_volume = solid_volume->GetComponent(p, 0);
     EXPECT_NEAR(a.volume->GetComponent(p, 0), kPorosity * mixture_volume,
                 1e-12 * kPorosity * mixture_volume);
-    EXPECT_NEAR(a.mass->GetComponent(p, 0), kPorosity * kWaterDensity * mixture_volume,
-                1e-12 * kPorosity * kWaterDensity * mixture_volume);
+    EXPECT_NEAR(
+        a.mass->GetComponent(p, 0),
+        kPorosity * kWaterDensity * mixture_volume * compressed(0.5 - a.grid->GetPoint(p)[1]),
+        1e-9 * kPorosity * kWaterDensity * mixture_volume);
   }
 
   // Pore and free water: hydrostatic from the free surface at y = 0.5.
