@@ -9,6 +9,20 @@
 
 namespace lituya::verify {
 
+namespace {
+
+// When the record first rises through `level`, interpolated linearly between the samples
+// around it; NaN when it never does.
+double arrival_time(const std::vector<double>& time, const std::vector<double>& eta,
+                    double level) {
+  for (std::size_t k = 1; k < eta.size() && k < time.size(); ++k)
+    if (eta[k - 1] < level && eta[k] >= level)
+      return time[k - 1] + (level - eta[k - 1]) / (eta[k] - eta[k - 1]) * (time[k] - time[k - 1]);
+  return NAN;
+}
+
+}  // namespace
+
 void run_case_b(const CaseContext& context, CaseResult& result) {
   const double g = 9.81, h0 = 0.15;
   const double x1 = 0.3, x2 = 0.6;  // the paper's X1 = -0.3 m, X2 = -0.6 m (x = -X)
@@ -28,15 +42,23 @@ void run_case_b(const CaseContext& context, CaseResult& result) {
   };
   const post::WaveCrest c1 = first_crest(r.gauge_eta[0]);
   const post::WaveCrest c2 = first_crest(r.gauge_eta[1]);
-  write_csv(context.work / "first_crests.csv", "gauge_x,first_crest_time,first_crest_height",
-            {{x1, c1.time, c1.height}, {x2, c2.time, c2.height}});
+  // The wave's arrival at a gauge: the record's first rise through half its first crest. The
+  // crest's own time is a poor clock: at X1 the first wave has a flat top 0.05-0.1 s long,
+  // and which sample of it is highest moves with the noise (crest-to-crest celerities of
+  // 1.03-1.58 m/s over the cell sizes 0.03-0.01 m, against 1.21-1.30 m/s from half-height
+  // arrivals).
+  const double t1 = arrival_time(r.liquid_time, r.gauge_eta[0], 0.5 * c1.height);
+  const double t2 = arrival_time(r.liquid_time, r.gauge_eta[1], 0.5 * c2.height);
+  write_csv(context.work / "first_crests.csv",
+            "gauge_x,first_crest_time,first_crest_height,half_height_arrival_time",
+            {{x1, c1.time, c1.height, t1}, {x2, c2.time, c2.height, t2}});
 
   // X1 higher than X2: the ratio lies in [0, 1].
   add_check(result, "first-crest height ratio X2 / X1", "-", c2.height / c1.height, 0.5, 0.5);
-  const double celerity = (x2 - x1) / (c2.time - c1.time);
+  const double celerity = (x2 - x1) / (t2 - t1);
   const double long_wave = std::sqrt(g * h0);
-  add_check(result, "first-crest celerity from X1 to X2", "m/s", celerity, long_wave,
-            0.2 * long_wave);
+  add_check(result, "first-wave celerity from X1 to X2 (half-height arrivals)", "m/s", celerity,
+            long_wave, 0.2 * long_wave);
 
   for (const char* png : {"gauges.png", "leading_wave.png", "surface_profiles.png"})
     if (std::filesystem::exists(post_folder / png))
