@@ -36,6 +36,8 @@ const std::vector<CaseEntry>& all_cases() {
   static const std::vector<CaseEntry> cases = {
       {"bar_vibration", "1D elastic bar vibration", run_bar_vibration},
       {"sliding_block", "Block sliding on a rigid incline", run_sliding_block},
+      {"saturated_block", "Saturated block on a submerged incline: friction on effective stress",
+       run_saturated_block},
       {"gravity_column", "Gravity loading of a soil column", run_gravity_column},
       {"column_collapse", "Granular column collapse (dry, a = 2) at the default Courant number",
        run_column_collapse},
