@@ -97,14 +97,8 @@ int Simulation<dim>::project_liquid_pressure() {
   // full dam break (verification/dam_break) 8.8 iterations per projection on average (at most
   // 14) instead of 53 (at most 146) to the same residual, each iteration about twice the work.
   // The sweeps are serial (the multiply is shared by rows): the same bits on any thread count.
-  const int iteration = detail::preconditioned_conjugate_gradient(
-      [&](const std::vector<double>& x, std::vector<double>& y) {
-        matrix.multiply(x, y, threads_);
-      },
-      [&](const std::vector<double>& r, std::vector<double>& z) {
-        matrix.symmetric_gauss_seidel(r, z);
-      },
-      s.row_rhs, s.row_solution, s.cg, 1e-8, 200);
+  const int iteration = detail::gauss_seidel_conjugate_gradient(matrix, s.row_rhs, s.row_solution,
+                                                                s.cg, 1e-8, 200, threads_);
   std::fill(s.solution.begin(), s.solution.end(), 0.0);
   for (std::size_t r = 0; r < n_rows; ++r) s.solution[row_node[r]] = s.row_solution[r];
   gather_liquid(s.solution, s.point_values);

@@ -2,8 +2,9 @@
 // Preconditioned conjugate gradients on nodal vectors: the water's two projections
 // (pressure_projection.cpp, pore_volume_projection.cpp) solve symmetric positive definite
 // systems this way. Serial loops in a fixed order: the same bits for any thread count.
-// Below it, a sparse matrix with its symmetric Gauss-Seidel preconditioner, and the points'
-// mass matrix assembled into one (what the pressure projection solves).
+// Below it, a sparse matrix with its symmetric Gauss-Seidel preconditioner, its assembly from
+// the cell matrices of a mesh (what the pore volume projection solves), and the points' mass
+// matrix assembled that way (what the pressure projection solves).
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -122,22 +123,31 @@ struct SparseMatrix {
   }
 };
 
-// The points' mass matrix on the linear simplex cells of a mesh,
-//     M_IJ = sum_q V_q N_I(x_q) N_J(x_q),
-// with its lumped diagonal m_I = sum_q V_q N_I(x_q) and a right-hand side
-// b_I = sum_q V_q N_I(x_q) f_q, assembled in one pass over the points. Applying M matrix-free
-// costs a gather and a scatter over all points; assembled, it is one short row per node
-// (7 entries on a structured triangle mesh, about 15 on tetrahedra), several times cheaper
-// once a solve takes more than a few iterations.
+// Solves A x = rhs as preconditioned_conjugate_gradient does, preconditioned by A's symmetric
+// Gauss-Seidel splitting (A symmetric with a positive diagonal), the multiply on `threads`.
+// Far fewer iterations than with the diagonal, each dearer by two sweeps: both projections
+// measured it (pressure_projection.cpp, pore_volume_projection.cpp).
+inline int gauss_seidel_conjugate_gradient(const SparseMatrix& a, const std::vector<double>& rhs,
+                                           std::vector<double>& x, ConjugateGradientScratch& s,
+                                           double relative_tolerance, int max_iterations,
+                                           int threads) {
+  return preconditioned_conjugate_gradient(
+      [&](const std::vector<double>& v, std::vector<double>& y) { a.multiply(v, y, threads); },
+      [&](const std::vector<double>& r, std::vector<double>& z) { a.symmetric_gauss_seidel(r, z); },
+      rhs, x, s, relative_tolerance, max_iterations);
+}
+
+// A symmetric matrix assembled from matrices of the linear simplex cells of a mesh,
+//     A_IJ = sum over the cells c holding nodes I and J of a_c(i, j),
+// i and j the corners of I and J in c, on the rows and columns of a chosen set of nodes:
+// `nodes()[r]` is row r's node, in increasing node order. What both water projections solve
+// (the points' mass matrix below; the pore water's Laplacian, pore_volume_projection.cpp).
 //
-// Only the nodes that carry water (m_I > 0) get a row: `nodes()[r]` is row r's node, in
-// increasing node order. A node with m_I = 0 has N_I = 0 at every point of its cells, so its
-// row and column are zero and leaving it out changes nothing but the work.
-//
-// Every sum is made by one thread in an order fixed by the mesh and the point order (points
-// by cell, cells by node): the result has the same bits for any thread count.
+// The node-node pattern of the mesh is made once (set_mesh); each assembly then sums row by
+// row, one thread a row, over the row node's cells in cell order: the result has the same
+// bits for any thread count, and the same as a serial loop over the cells adding into nodes.
 template <int dim>
-class PointMassMatrix {
+class MeshMatrix {
  public:
   static constexpr int kCorners = dim + 1;
   using CellNodes = std::array<int, kCorners>;
@@ -149,6 +159,7 @@ class PointMassMatrix {
   const SparseMatrix& matrix() const { return matrix_; }
   SparseMatrix& matrix() { return matrix_; }
   const std::vector<std::size_t>& nodes() const { return row_node_; }
+  std::size_t node_count() const { return corner_start_.size() - 1; }
 
   // Once per mesh: the corners of the cells around each node, the node-node pattern of the
   // mesh (each node's neighbours, itself included, sorted) and where each pair of corners of a
@@ -195,6 +206,108 @@ class PointMassMatrix {
       }
   }
 
+  // Calls f(c, i) for each cell c around `node`, in cell order, i the node's corner in c. A
+  // nodal sum made through it by a loop over the nodes (any schedule) adds in the order of a
+  // serial loop over the cells, and so has its bits, on any thread count. set_mesh() first.
+  template <class F>
+  void for_each_cell_around(std::size_t node, const F& f) const {
+    for (std::size_t k = corner_start_[node]; k < corner_start_[node + 1]; ++k)
+      f(std::size_t{corner_[k] / kCorners}, static_cast<int>(corner_[k] % kCorners));
+  }
+
+  // Assembles A on the rows (and columns) of the nodes with in_row(node) true. The cells with
+  // block_of_cell[c] = e >= 0 contribute a_c(i, j) = block(e, i, j), which must be symmetric
+  // in (i, j) to the last bit for A to be; the others contribute nothing. set_mesh() first.
+  template <class InRow, class Block>
+  void assemble(const std::vector<int>& block_of_cell, const InRow& in_row, const Block& block,
+                int threads) {
+    const std::size_t n_nodes = node_count();
+    // 1. The rows, numbered in node order.
+    row_of_node_.assign(n_nodes, -1);
+    row_node_.clear();
+    for (std::size_t node = 0; node < n_nodes; ++node)
+      if (in_row(node)) {
+        row_of_node_[node] = static_cast<int>(row_node_.size());
+        row_node_.push_back(node);
+      }
+    const std::size_t n_rows = row_node_.size();
+    // 2. Their pattern: the mesh's, less the columns of the nodes left out (zero entries).
+    //    `entry_` maps a mesh pattern entry of such a row to the matrix's (or -1).
+    matrix_.row_start.assign(n_rows + 1, 0);
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (std::size_t r = 0; r < n_rows; ++r) {
+      std::size_t count = 0;
+      for (std::size_t k = pattern_.row_start[row_node_[r]];
+           k < pattern_.row_start[row_node_[r] + 1]; ++k)
+        count += row_of_node_[static_cast<std::size_t>(pattern_.column[k])] >= 0;
+      matrix_.row_start[r + 1] = count;
+    }
+    std::partial_sum(matrix_.row_start.begin(), matrix_.row_start.end(), matrix_.row_start.begin());
+    matrix_.column.resize(matrix_.row_start[n_rows]);
+    matrix_.value.resize(matrix_.row_start[n_rows]);
+    matrix_.diagonal.resize(n_rows);
+    entry_.resize(pattern_.column.size());
+    // 3. The values: each row summed by one thread over the node's cells in cell order.
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (std::size_t r = 0; r < n_rows; ++r) {
+      const std::size_t node = row_node_[r];
+      std::size_t out = matrix_.row_start[r];
+      for (std::size_t k = pattern_.row_start[node]; k < pattern_.row_start[node + 1]; ++k) {
+        const int column = row_of_node_[static_cast<std::size_t>(pattern_.column[k])];
+        if (column < 0) {
+          entry_[k] = -1;
+        } else {
+          entry_[k] = static_cast<int>(out);
+          if (static_cast<std::size_t>(column) == r) matrix_.diagonal[r] = out;
+          matrix_.column[out] = column;
+          matrix_.value[out++] = 0;
+        }
+      }
+      for (std::size_t k = corner_start_[node]; k < corner_start_[node + 1]; ++k) {
+        const int e = block_of_cell[corner_[k] / kCorners];
+        if (e < 0) continue;
+        const int i = static_cast<int>(corner_[k] % kCorners);
+        for (int j = 0; j < kCorners; ++j) {
+          const int at = entry_[slot_[std::size_t{corner_[k]} * kCorners + j]];
+          if (at >= 0) matrix_.value[static_cast<std::size_t>(at)] += block(e, i, j);
+        }
+      }
+    }
+  }
+
+ private:
+  // From set_mesh. 32-bit indices where there is one per cell corner or pair of corners (half
+  // the memory; a mesh would need 10^9 cells to overflow them).
+  std::vector<std::size_t> corner_start_;
+  std::vector<std::uint32_t> corner_;  // by node: c * kCorners + i
+  SparseMatrix pattern_;               // values unused
+  std::vector<std::uint32_t> slot_;
+  // Rebuilt by each assembly.
+  std::vector<std::size_t> row_node_;
+  std::vector<int> row_of_node_, entry_;
+  SparseMatrix matrix_;
+};
+
+// The points' mass matrix on the linear simplex cells of a mesh,
+//     M_IJ = sum_q V_q N_I(x_q) N_J(x_q),
+// with its lumped diagonal m_I = sum_q V_q N_I(x_q) and a right-hand side
+// b_I = sum_q V_q N_I(x_q) f_q, assembled in one pass over the points. Applying M matrix-free
+// costs a gather and a scatter over all points; assembled, it is one short row per node
+// (7 entries on a structured triangle mesh, about 15 on tetrahedra), several times cheaper
+// once a solve takes more than a few iterations.
+//
+// Only the nodes that carry water (m_I > 0) get a row: `nodes()[r]` is row r's node, in
+// increasing node order. A node with m_I = 0 has N_I = 0 at every point of its cells, so its
+// row and column are zero and leaving it out changes nothing but the work.
+//
+// Every sum is made by one thread in an order fixed by the mesh and the point order (points
+// by cell, cells by node): the result has the same bits for any thread count.
+template <int dim>
+class PointMassMatrix : public MeshMatrix<dim> {
+ public:
+  static constexpr int kCorners = dim + 1;
+  using CellNodes = std::array<int, kCorners>;
+
   // Assembles M (rows of the nodes with m_I > 0), m and b from the points: `cell[q]` the
   // point's cell, `shape[q]` its shape values there, `volume[q]` V_q, `values[q]` f_q.
   // `lumped` and `rhs` receive m and b on all nodes. set_mesh() must have been called.
@@ -203,7 +316,7 @@ class PointMassMatrix {
                 const std::vector<Shape>& shape, const std::vector<double>& volume,
                 const std::vector<double>& values, int threads, std::vector<double>& lumped,
                 std::vector<double>& rhs) {
-    const std::size_t n_cells = cell_nodes.size(), n_nodes = corner_start_.size() - 1;
+    const std::size_t n_cells = cell_nodes.size(), n_nodes = this->node_count();
     // 1. The points of each cell, in point order (a counting sort): each cell's sums below
     //    are then made by one thread in a fixed order.
     cell_start_.assign(n_cells + 1, 0);
@@ -249,68 +362,20 @@ class PointMassMatrix {
 #pragma omp parallel for num_threads(threads) schedule(static)
     for (std::size_t node = 0; node < n_nodes; ++node) {
       double m = 0, b = 0;
-      for (std::size_t k = corner_start_[node]; k < corner_start_[node + 1]; ++k) {
-        const int e = element_of_cell_[corner_[k] / kCorners];
-        if (e < 0) continue;
-        m += element_[static_cast<std::size_t>(e)].lumped[corner_[k] % kCorners];
-        b += element_[static_cast<std::size_t>(e)].rhs[corner_[k] % kCorners];
-      }
+      this->for_each_cell_around(node, [&](std::size_t c, int i) {
+        const int e = element_of_cell_[c];
+        if (e < 0) return;
+        m += element_[static_cast<std::size_t>(e)].lumped[i];
+        b += element_[static_cast<std::size_t>(e)].rhs[i];
+      });
       lumped[node] = m;
       rhs[node] = b;
     }
-    // 4. The rows: nodes with m > 0, numbered in node order.
-    row_of_node_.assign(n_nodes, -1);
-    row_node_.clear();
-    for (std::size_t node = 0; node < n_nodes; ++node)
-      if (lumped[node] > 0) {
-        row_of_node_[node] = static_cast<int>(row_node_.size());
-        row_node_.push_back(node);
-      }
-    const std::size_t n_rows = row_node_.size();
-    // 5. Their pattern: the mesh's, less the columns of nodes without water (zero entries).
-    //    `entry_` maps a mesh pattern entry of such a row to the matrix's (or -1).
-    matrix_.row_start.assign(n_rows + 1, 0);
-#pragma omp parallel for num_threads(threads) schedule(static)
-    for (std::size_t r = 0; r < n_rows; ++r) {
-      std::size_t count = 0;
-      for (std::size_t k = pattern_.row_start[row_node_[r]];
-           k < pattern_.row_start[row_node_[r] + 1]; ++k)
-        count += row_of_node_[static_cast<std::size_t>(pattern_.column[k])] >= 0;
-      matrix_.row_start[r + 1] = count;
-    }
-    std::partial_sum(matrix_.row_start.begin(), matrix_.row_start.end(), matrix_.row_start.begin());
-    matrix_.column.resize(matrix_.row_start[n_rows]);
-    matrix_.value.resize(matrix_.row_start[n_rows]);
-    matrix_.diagonal.resize(n_rows);
-    entry_.resize(pattern_.column.size());
-    // 6. The values: each row summed by one thread over the node's cells in cell order.
-#pragma omp parallel for num_threads(threads) schedule(static)
-    for (std::size_t r = 0; r < n_rows; ++r) {
-      const std::size_t node = row_node_[r];
-      std::size_t out = matrix_.row_start[r];
-      for (std::size_t k = pattern_.row_start[node]; k < pattern_.row_start[node + 1]; ++k) {
-        const int column = row_of_node_[static_cast<std::size_t>(pattern_.column[k])];
-        if (column < 0) {
-          entry_[k] = -1;
-        } else {
-          entry_[k] = static_cast<int>(out);
-          if (static_cast<std::size_t>(column) == r) matrix_.diagonal[r] = out;
-          matrix_.column[out] = column;
-          matrix_.value[out++] = 0;
-        }
-      }
-      for (std::size_t k = corner_start_[node]; k < corner_start_[node + 1]; ++k) {
-        const int e = element_of_cell_[corner_[k] / kCorners];
-        if (e < 0) continue;
-        const int i = static_cast<int>(corner_[k] % kCorners);
-        for (int j = 0; j < kCorners; ++j) {
-          const int at = entry_[slot_[std::size_t{corner_[k]} * kCorners + j]];
-          if (at >= 0)
-            matrix_.value[static_cast<std::size_t>(at)] +=
-                element_[static_cast<std::size_t>(e)].matrix[i][j];
-        }
-      }
-    }
+    // 4. M on the rows of the nodes with m > 0.
+    MeshMatrix<dim>::assemble(
+        element_of_cell_, [&](std::size_t node) { return lumped[node] > 0; },
+        [&](int e, int i, int j) { return element_[static_cast<std::size_t>(e)].matrix[i][j]; },
+        threads);
   }
 
  private:
@@ -318,18 +383,10 @@ class PointMassMatrix {
     std::array<std::array<double, kCorners>, kCorners> matrix{};
     std::array<double, kCorners> lumped{}, rhs{};
   };
-  // From set_mesh. 32-bit indices where there is one per cell corner or pair of corners (half
-  // the memory; a mesh would need 10^9 cells to overflow them).
-  std::vector<std::size_t> corner_start_;
-  std::vector<std::uint32_t> corner_;  // by node: c * kCorners + i
-  SparseMatrix pattern_;               // values unused
-  std::vector<std::uint32_t> slot_;
   // Rebuilt by each assembly.
-  std::vector<std::size_t> cell_start_, cell_point_, next_, element_cell_, row_node_;
-  std::vector<int> element_of_cell_, row_of_node_;
+  std::vector<std::size_t> cell_start_, cell_point_, next_, element_cell_;
+  std::vector<int> element_of_cell_;
   std::vector<Element> element_;
-  std::vector<int> entry_;
-  SparseMatrix matrix_;
 };
 
 }  // namespace lituya::solver::detail

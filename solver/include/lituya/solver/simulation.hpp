@@ -240,8 +240,11 @@ class Simulation {
     std::vector<char> wet_cell, unknown;
     std::vector<double> rhs, diagonal, potential;
     detail::ConjugateGradientScratch cg;
-    std::vector<double> cell_weight, node_weight;
-    std::vector<Vec> displacement;
+    detail::MeshMatrix<dim> laplacian;           // L assembled (pattern once per mesh)
+    std::vector<double> row_rhs, row_potential;  // rhs and phi on L's rows
+    std::vector<int> wet_block;                  // c for a wet cell, else -1
+    std::vector<double> cell_weight;
+    std::vector<Vec> cell_gradient, displacement;
   };
   PoreVolumeScratch pore_volume_;
   int pore_liquid_ = -1;  // the water material that fills the pores (drag, eq. 23)
