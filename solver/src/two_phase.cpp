@@ -249,7 +249,7 @@ void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
     solid_.node_velocity[i] = vs;
     water_.node_velocity[i] = vw;
     // At a contact wall the grains' share (1 - n) p of the pore pressure pushes them on the
-    // wall without friction (the effective stress principle, eq. 19).
+    // wall without friction (the effective stress principle, eq. 14).
     node_pore_pressure_push_[i] = has_solid ? dt * (1.0 - n) * node_pressure_[i] / ms : 0.0;
     solid_.node_acceleration[i] = vs_old;
     water_.node_acceleration[i] = vw_old;

@@ -274,7 +274,7 @@ TEST(TwoPhase, SaturatedBedUnderWaterStaysAtRest) {
 // water table at its surface. Fine grains (D = 0.1 mm) lock the phases together, so the
 // mixture moves as one body: the driving force is its full weight rho_sat g sin(theta), the
 // pore pressure is rho_w g cos(theta) depth and the friction acts on the effective normal
-// stress (rho_sat - rho_w) g cos(theta) h only (eq. 19). Hence
+// stress (rho_sat - rho_w) g cos(theta) h only (eq. 14). Hence
 //     a = g (sin(theta) - mu cos(theta) (rho_sat - rho_w) / rho_sat),
 // and the layer stays put for tan(theta) < mu (rho_sat - rho_w) / rho_sat. The water slides
 // along the bed (a roller for the liquid phase). The layer first settles on a glued bed, so

@@ -42,7 +42,7 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
 // per unit wall area at which the wall's reaction to the grains' share of the pore pressure
 // pushes them. A contact wall takes that part, times the node's wall area, out of the normal
 // impulse that bounds the friction: Coulomb friction on a saturated soil acts on the effective
-// normal stress only (sigma'_n = sigma_n - p, eq. 19).
+// normal stress only (sigma'_n = sigma_n - p, eq. 14).
 // `coulomb` false (the liquid phase): a contact wall stops penetration but has no friction;
 // water slides along a wall, Coulomb's law is for the grains.
 template <int dim>
