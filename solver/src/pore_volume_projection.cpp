@@ -78,14 +78,12 @@ int Simulation<dim>::project_pore_water_volume() {
   // The water's share of each wet cell's volume: n_c |c|, n_c the mean of its nodal
   // porosities (the integral of the linear porosity field over the cell).
   s.cell_weight.resize(n_cells);
-  s.wet_block.resize(n_cells);
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t c = 0; c < n_cells; ++c) {
     double porosity = 0;
     if (s.wet_cell[c])
       for (int node : mesh_.cell_nodes[c]) porosity += node_porosity_[node];
     s.cell_weight[c] = mesh_.cell_volume[c] * porosity / (dim + 1);
-    s.wet_block[c] = s.wet_cell[c] ? static_cast<int>(c) : -1;
   }
   // The unknowns: the nodes all of whose cells are wet (a node of a dry cell is on the free
   // surface, phi = 0) and whose row of L is not zero.
@@ -112,13 +110,13 @@ int Simulation<dim>::project_pore_water_volume() {
   // L phi = rhs on the unknowns' rows and columns (phi = 0 at the other nodes). A wet region
   // without a free-surface node (a closed, full box) makes L singular; the small diagonal
   // shift keeps CG bounded there.
-  s.laplacian.assemble(
-      s.wet_block, [&](std::size_t i) { return s.unknown[i] != 0; },
-      [&](int c, int a, int b) {
-        const auto& grad = mesh_.cell_shape_gradient[static_cast<std::size_t>(c)];
-        return s.cell_weight[static_cast<std::size_t>(c)] * grad[a].dot(grad[b]);
-      },
-      threads_);
+  s.laplacian.assemble([&](std::size_t c) { return s.wet_cell[c] ? static_cast<int>(c) : -1; },
+                       [&](std::size_t i) { return s.unknown[i] != 0; },
+                       [&](int c, int a, int b) {
+                         const auto& grad = mesh_.cell_shape_gradient[static_cast<std::size_t>(c)];
+                         return s.cell_weight[static_cast<std::size_t>(c)] * grad[a].dot(grad[b]);
+                       },
+                       threads_);
   detail::SparseMatrix& matrix = s.laplacian.matrix();
   const std::vector<std::size_t>& row_node = s.laplacian.nodes();
   const std::size_t n_rows = row_node.size();

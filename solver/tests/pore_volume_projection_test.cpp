@@ -153,13 +153,13 @@ struct LaplacianOnPartOfABox {
       for (int node : mesh.cell_nodes[c]) row[node] = mesh.node_position[node](1) < 0.8;
     }
     matrix.set_mesh(mesh.cell_nodes, n_nodes);
-    matrix.assemble(
-        block, [&](std::size_t i) { return row[i] != 0; },
-        [&](int c, int a, int b) {
-          const auto& grad = mesh.cell_shape_gradient[static_cast<std::size_t>(c)];
-          return weight[static_cast<std::size_t>(c)] * grad[a].dot(grad[b]);
-        },
-        2);
+    matrix.assemble([&](std::size_t c) { return block[c]; },
+                    [&](std::size_t i) { return row[i] != 0; },
+                    [&](int c, int a, int b) {
+                      const auto& grad = mesh.cell_shape_gradient[static_cast<std::size_t>(c)];
+                      return weight[static_cast<std::size_t>(c)] * grad[a].dot(grad[b]);
+                    },
+                    2);
   }
   // y = L x on all nodes, x and y zero off the rows, applied cell by cell (what the projection
   // did before it assembled L).
@@ -269,13 +269,13 @@ double column_error(int cells_per_side, double s, double g) {
   }
   detail::MeshMatrix<dim> matrix;
   matrix.set_mesh(mesh.cell_nodes, n_nodes);
-  matrix.assemble(
-      block, [&](std::size_t i) { return mesh.node_position[i](1) < 1 - 1e-9; },
-      [&](int c, int a, int b) {
-        const auto& grad = mesh.cell_shape_gradient[static_cast<std::size_t>(c)];
-        return n * mesh.cell_volume[static_cast<std::size_t>(c)] * grad[a].dot(grad[b]);
-      },
-      1);
+  matrix.assemble([&](std::size_t c) { return block[c]; },
+                  [&](std::size_t i) { return mesh.node_position[i](1) < 1 - 1e-9; },
+                  [&](int c, int a, int b) {
+                    const auto& grad = mesh.cell_shape_gradient[static_cast<std::size_t>(c)];
+                    return n * mesh.cell_volume[static_cast<std::size_t>(c)] * grad[a].dot(grad[b]);
+                  },
+                  1);
   const std::vector<std::size_t>& nodes = matrix.nodes();
   std::vector<double> rhs(nodes.size()), phi(nodes.size(), 0.0);
   for (std::size_t r = 0; r < nodes.size(); ++r) rhs[r] = b[nodes[r]];

@@ -6,22 +6,9 @@
 
 #include "case_support.hpp"
 #include "lituya/post/postprocess.hpp"
+#include "lituya/post/reference_error.hpp"
 
 namespace lituya::verify {
-
-namespace {
-
-// When the record first rises through `level`, interpolated linearly between the samples
-// around it; NaN when it never does.
-double arrival_time(const std::vector<double>& time, const std::vector<double>& eta,
-                    double level) {
-  for (std::size_t k = 1; k < eta.size() && k < time.size(); ++k)
-    if (eta[k - 1] < level && eta[k] >= level)
-      return time[k - 1] + (level - eta[k - 1]) / (eta[k] - eta[k - 1]) * (time[k] - time[k - 1]);
-  return NAN;
-}
-
-}  // namespace
 
 void run_case_b(const CaseContext& context, CaseResult& result) {
   const double g = 9.81, h0 = 0.15;
@@ -47,8 +34,13 @@ void run_case_b(const CaseContext& context, CaseResult& result) {
   // and which sample of it is highest moves with the noise (crest-to-crest celerities of
   // 1.03-1.58 m/s over the cell sizes 0.03-0.01 m, against 1.21-1.30 m/s from half-height
   // arrivals).
-  const double t1 = arrival_time(r.liquid_time, r.gauge_eta[0], 0.5 * c1.height);
-  const double t2 = arrival_time(r.liquid_time, r.gauge_eta[1], 0.5 * c2.height);
+  auto half_height_arrival = [&](const std::vector<double>& eta, double crest) {
+    return r.liquid_time.empty() ? NAN
+                                 : post::arrival_time(r.liquid_time, eta, 0.5 * crest,
+                                                      r.liquid_time.front(), r.liquid_time.back());
+  };
+  const double t1 = half_height_arrival(r.gauge_eta[0], c1.height);
+  const double t2 = half_height_arrival(r.gauge_eta[1], c2.height);
   write_csv(context.work / "first_crests.csv",
             "gauge_x,first_crest_time,first_crest_height,half_height_arrival_time",
             {{x1, c1.time, c1.height, t1}, {x2, c2.time, c2.height, t2}});

@@ -5,47 +5,10 @@
 #include <cmath>
 
 #include "case_support.hpp"
+#include "incline_travel.hpp"
 #include "lituya/post/plot.hpp"
 
 namespace lituya::verify {
-
-namespace {
-
-struct Travel {
-  std::vector<double> time, travel;
-};
-
-// The mass-weighted mean along-slope displacement of the block's points at each output of
-// `stage`.
-Travel along_slope_travel(const std::filesystem::path& case_folder, const std::string& stage,
-                          double dx, double dy) {
-  Travel out;
-  for (const Frame& f : read_series(case_folder, stage)) {
-    int components = 0, mass_components = 0;
-    const auto u = read_point_array(f.file, "displacement", components);
-    const auto m = read_point_array(f.file, "mass", mass_components);
-    double sum = 0, mass = 0;
-    for (std::size_t p = 0; p < m.size(); ++p) {
-      sum += m[p] * (u[components * p] * dx + u[components * p + 1] * dy);
-      mass += m[p];
-    }
-    out.time.push_back(f.time);
-    out.travel.push_back(mass > 0 ? sum / mass : NAN);
-  }
-  return out;
-}
-
-// Least squares of s = a t^2 / 2.
-double fitted_acceleration(const Travel& t) {
-  double st2 = 0, t4 = 0;
-  for (std::size_t i = 0; i < t.time.size(); ++i) {
-    st2 += t.travel[i] * t.time[i] * t.time[i];
-    t4 += std::pow(t.time[i], 4);
-  }
-  return t4 > 0 ? 2 * st2 / t4 : NAN;
-}
-
-}  // namespace
 
 void run_saturated_block(const CaseContext& context, CaseResult& result) {
   constexpr double kPi = 3.14159265358979323846;
@@ -61,9 +24,9 @@ void run_saturated_block(const CaseContext& context, CaseResult& result) {
     return run_scene(context, context.source / ("scene_" + variant + "_" + name + ".toml"),
                      context.work / name);
   };
-  const Travel slides = along_slope_travel(run("slides"), "slide", dx, dy);
-  const Travel free = along_slope_travel(run("free"), "slide", dx, dy);
-  const Travel stays = along_slope_travel(run("stays"), "hold", dx, dy);
+  const InclineTravel slides = along_slope_travel(run("slides"), "slide", dx, dy);
+  const InclineTravel free = along_slope_travel(run("free"), "slide", dx, dy);
+  const InclineTravel stays = along_slope_travel(run("stays"), "hold", dx, dy);
 
   // (1) The closed form; the water the grains displace (added mass) is not in it (README).
   const double measured = fitted_acceleration(slides);

@@ -216,10 +216,10 @@ class MeshMatrix {
   }
 
   // Assembles A on the rows (and columns) of the nodes with in_row(node) true. The cells with
-  // block_of_cell[c] = e >= 0 contribute a_c(i, j) = block(e, i, j), which must be symmetric
+  // block_of_cell(c) = e >= 0 contribute a_c(i, j) = block(e, i, j), which must be symmetric
   // in (i, j) to the last bit for A to be; the others contribute nothing. set_mesh() first.
-  template <class InRow, class Block>
-  void assemble(const std::vector<int>& block_of_cell, const InRow& in_row, const Block& block,
+  template <class BlockOfCell, class InRow, class Block>
+  void assemble(const BlockOfCell& block_of_cell, const InRow& in_row, const Block& block,
                 int threads) {
     const std::size_t n_nodes = node_count();
     // 1. The rows, numbered in node order.
@@ -264,7 +264,7 @@ class MeshMatrix {
         }
       }
       for (std::size_t k = corner_start_[node]; k < corner_start_[node + 1]; ++k) {
-        const int e = block_of_cell[corner_[k] / kCorners];
+        const int e = block_of_cell(std::size_t{corner_[k] / kCorners});
         if (e < 0) continue;
         const int i = static_cast<int>(corner_[k] % kCorners);
         for (int j = 0; j < kCorners; ++j) {
@@ -305,8 +305,8 @@ class MeshMatrix {
 template <int dim>
 class PointMassMatrix : public MeshMatrix<dim> {
  public:
-  static constexpr int kCorners = dim + 1;
-  using CellNodes = std::array<int, kCorners>;
+  using MeshMatrix<dim>::kCorners;
+  using typename MeshMatrix<dim>::CellNodes;
 
   // Assembles M (rows of the nodes with m_I > 0), m and b from the points: `cell[q]` the
   // point's cell, `shape[q]` its shape values there, `volume[q]` V_q, `values[q]` f_q.
@@ -373,7 +373,8 @@ class PointMassMatrix : public MeshMatrix<dim> {
     }
     // 4. M on the rows of the nodes with m > 0.
     MeshMatrix<dim>::assemble(
-        element_of_cell_, [&](std::size_t node) { return lumped[node] > 0; },
+        [&](std::size_t c) { return element_of_cell_[c]; },
+        [&](std::size_t node) { return lumped[node] > 0; },
         [&](int e, int i, int j) { return element_[static_cast<std::size_t>(e)].matrix[i][j]; },
         threads);
   }

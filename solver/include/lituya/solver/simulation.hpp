@@ -242,7 +242,6 @@ class Simulation {
     detail::ConjugateGradientScratch cg;
     detail::MeshMatrix<dim> laplacian;           // L assembled (pattern once per mesh)
     std::vector<double> row_rhs, row_potential;  // rhs and phi on L's rows
-    std::vector<int> wet_block;                  // c for a wet cell, else -1
     std::vector<double> cell_weight;
     std::vector<Vec> cell_gradient, displacement;
   };
