@@ -171,6 +171,7 @@ struct WaterInput {
   std::vector<SeriesEntry> series;
   std::optional<GaugeReference> reference;
   double half_width = 0;  // of a gauge's column; the surface profile bins are twice as wide
+  double gravity = 0;     // m/s2, |gravity|, for the leading wave's speed bound
 };
 
 WaterInput read_water_input(const PostSettings& settings, const fs::path& case_folder,
@@ -189,6 +190,7 @@ WaterInput read_water_input(const PostSettings& settings, const fs::path& case_f
   if (input.series.empty()) throw InputError(pvd.string(), 0, "the collection lists no outputs");
   if (!settings.gauge_reference_file.empty())
     input.reference = read_gauge_reference(settings.gauge_reference_file, settings.gauge_names);
+  if (settings.leading_wave) input.gravity = case_gravity(case_folder);
 
   if (settings.gauge_half_width) {
     input.half_width = *settings.gauge_half_width;
@@ -362,9 +364,13 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
     result.surface_profiles.push_back({t, series[profile_output.back()].time, {}});
   }
 
+  // The leading wave is tracked over the whole record once it is read: one profile per output.
+  std::vector<std::vector<SurfaceBin>> wave_profiles;
+  double depth = NAN;  // of the still water, from the first output with water (the lake at rest)
   for (size_t k = 0; k < series.size(); ++k) {
     const PointCloud liquid =
         free_water(read_liquid_points(series[k].file, dimension), settings.surface_min_porosity);
+    if (std::isnan(depth)) depth = still_water_depth(liquid, settings.still_water_level);
     result.liquid_time.push_back(series[k].time);
     for (size_t g = 0; g < gauges; ++g)
       result.gauge_eta[g].push_back(gauge_elevation(liquid, settings.gauges[g], input.half_width,
@@ -373,18 +379,20 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
         std::find(profile_output.begin(), profile_output.end(), k) != profile_output.end();
     if (!settings.leading_wave && !profile_wanted) continue;
     // Anchored on leading_wave_start, so the crest search starts on a bin edge.
-    const std::vector<SurfaceBin> profile =
+    std::vector<SurfaceBin> profile =
         surface_profile(liquid, settings.leading_wave_start, bin_width, settings.still_water_level);
-    if (settings.leading_wave) {
-      const LeadingWave wave =
-          find_leading_wave(profile, settings.leading_wave_start, settings.leading_wave_min_height);
+    for (size_t p = 0; p < profile_output.size(); ++p)
+      if (profile_output[p] == k) result.surface_profiles[p].bins = profile;
+    if (settings.leading_wave) wave_profiles.push_back(std::move(profile));
+  }
+  if (settings.leading_wave)
+    for (const LeadingWave& wave :
+         track_leading_wave(result.liquid_time, wave_profiles, settings.leading_wave_start,
+                            settings.leading_wave_min_height, depth, input.gravity)) {
       result.crest_x.push_back(wave.crest_x);
       result.crest_eta.push_back(wave.crest_eta);
       result.max_eta.push_back(wave.max_eta);
     }
-    for (size_t p = 0; p < profile_output.size(); ++p)
-      if (profile_output[p] == k) result.surface_profiles[p].bins = profile;
-  }
 
   const std::string stage = " (stage '" + settings.liquid_stage + "')";
   bool plotted = true;
@@ -653,6 +661,19 @@ bool draw_scene_snapshots(const PostSettings& settings, const SnapshotInput& inp
 }
 
 }  // namespace
+
+double case_gravity(const fs::path& case_folder) {
+  constexpr double kStandardGravity = 9.81;
+  const fs::path stages = case_folder / "stages.toml";
+  if (!fs::exists(stages)) return kStandardGravity;
+  TomlDocument document(stages);
+  TomlTable root = document.root();
+  if (!root.has("gravity")) return kStandardGravity;
+  double squared = 0;
+  for (double component : root.numbers("gravity")) squared += component * component;
+  if (!(squared > 0)) root.fail("the leading wave needs gravity, but 'gravity' is zero", "gravity");
+  return std::sqrt(squared);
+}
 
 PostResult postprocess(const fs::path& case_folder, const fs::path& post_folder, bool overwrite) {
   // Everything the user wrote is checked before the post folder is touched, so a typo never

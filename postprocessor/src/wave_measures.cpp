@@ -14,6 +14,9 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "lituya/post/postprocess.hpp"
@@ -162,14 +165,44 @@ std::vector<SurfaceBin> surface_profile(const PointCloud& liquid, double origin,
   return profile;
 }
 
+namespace {
+
+// The highest eta of the bins whose centre is at or beyond from_x; NaN when none holds liquid.
+double highest_surface(const std::vector<SurfaceBin>& profile, double from_x) {
+  double highest = kNaN;
+  for (const SurfaceBin& bin : profile)
+    if (bin.x >= from_x && std::isfinite(bin.eta) && (std::isnan(highest) || bin.eta > highest))
+      highest = bin.eta;
+  return highest;
+}
+
+// Bin k (holding liquid) is a crest when it is at least as high as every non-empty bin within
+// 2 bins on either side. A maximum over +-2 bins, not just +-1: a bump of one bin on the flank
+// of a wave is a +-1 maximum, but the crest two bins further up the flank is higher than it.
+bool is_crest(const std::vector<SurfaceBin>& profile, size_t k) {
+  const size_t first = k >= 2 ? k - 2 : 0, last = std::min(profile.size() - 1, k + 2);
+  for (size_t j = first; j <= last; ++j)
+    if (j != k && profile[j].eta > profile[k].eta) return false;
+  return true;
+}
+
+// The width of the profile's bins: the smallest spacing of neighbouring bins (a profile lists
+// its bins in order, gaps only where a point was flung absurdly far); 0 with fewer than two.
+double bin_width(const std::vector<SurfaceBin>& profile) {
+  double width = 0;
+  for (size_t k = 1; k < profile.size(); ++k) {
+    const double step = profile[k].x - profile[k - 1].x;
+    if (step > 0 && (width == 0 || step < width)) width = step;
+  }
+  return width;
+}
+
+}  // namespace
+
 LeadingWave find_leading_wave(const std::vector<SurfaceBin>& profile, double from_x,
                               double min_height) {
   LeadingWave wave;
-  const auto n = static_cast<long long>(profile.size());
-  for (const SurfaceBin& bin : profile)
-    if (bin.x >= from_x && std::isfinite(bin.eta) &&
-        (std::isnan(wave.max_eta) || bin.eta > wave.max_eta))
-      wave.max_eta = bin.eta;
+  wave.max_eta = highest_surface(profile, from_x);
   if (std::isnan(wave.max_eta)) return wave;
 
   // A crest must stand out of the noise twice over: absolutely (min_height, ripples of
@@ -177,22 +210,81 @@ LeadingWave find_leading_wave(const std::vector<SurfaceBin>& profile, double fro
   // leading wave a tenth of the main one is too small to follow through the splash).
   const double threshold = std::max(min_height, 0.1 * wave.max_eta);
   // From downstream: the first crest found is the leading one.
-  for (long long k = n - 1; k >= 0; --k) {
+  for (size_t k = profile.size(); k-- > 0;) {
     const SurfaceBin& bin = profile[k];
     if (bin.x < from_x) break;
-    if (!(bin.eta > threshold)) continue;
-    // A maximum over +-2 bins, not just +-1: a bump of one bin on the flank of a wave is a
-    // +-1 maximum, but the crest two bins further up the flank is higher than it.
-    bool crest = true;
-    for (long long j = std::max(0LL, k - 2); j <= std::min(n - 1, k + 2) && crest; ++j)
-      crest = j == k || !(profile[j].eta > bin.eta);
-    if (crest) {
+    if (bin.eta > threshold && is_crest(profile, k)) {
       wave.crest_x = bin.x;
       wave.crest_eta = bin.eta;
       return wave;
     }
   }
   return wave;
+}
+
+std::vector<LeadingWave> track_leading_wave(const std::vector<double>& time,
+                                            const std::vector<std::vector<SurfaceBin>>& profiles,
+                                            double from_x, double min_height,
+                                            double still_water_depth, double gravity) {
+  if (time.size() != profiles.size())
+    throw std::invalid_argument("track_leading_wave: " + std::to_string(time.size()) +
+                                " times for " + std::to_string(profiles.size()) + " profiles");
+  if (!(gravity > 0)) throw std::invalid_argument("track_leading_wave: gravity must be > 0");
+  const double depth = std::fmax(still_water_depth, 0.0);  // NaN counts as 0
+
+  std::vector<LeadingWave> record;
+  record.reserve(profiles.size());
+  bool tracking = false;
+  double x_last = kNaN, t_last = kNaN, max_eta_last = kNaN;  // of the last position taken
+  for (size_t k = 0; k < profiles.size(); ++k) {
+    const std::vector<SurfaceBin>& profile = profiles[k];
+    if (!tracking) {
+      const LeadingWave wave = find_leading_wave(profile, from_x, min_height);
+      if (std::isfinite(wave.crest_x)) {
+        tracking = true;
+        x_last = wave.crest_x;
+        t_last = time[k];
+        max_eta_last = wave.max_eta;
+      }
+      record.push_back(wave);
+      continue;
+    }
+
+    LeadingWave wave;
+    wave.max_eta = highest_surface(profile, from_x);
+    // The wave can have been no higher than the highest surface of either frame; a bore or a
+    // solitary wave runs faster the higher it is, so that height goes into the bound.
+    const double highest = std::fmax(std::fmax(max_eta_last, wave.max_eta), 0.0);
+    const double fastest = kLeadingWaveSpeedMargin * std::sqrt(gravity * (depth + highest));
+    const double reach = fastest * (time[k] - t_last) + bin_width(profile);
+    // The highest bin of the window. Inside the window it is a crest by find_leading_wave's
+    // test; on the window's edge it need not be (higher water just beyond): the crest then
+    // lies further on (a broad crest whose highest bin the noise had put at its rear), and the
+    // track climbs towards it, never faster than the wave can run.
+    std::optional<size_t> best;
+    for (size_t j = 0; j < profile.size(); ++j) {
+      const SurfaceBin& bin = profile[j];
+      if (bin.x < from_x || !(std::abs(bin.x - x_last) <= reach) || !(bin.eta > min_height))
+        continue;
+      // >= on the height: of two equal bins the more downstream one leads.
+      if (!best || bin.eta >= profile[*best].eta) best = j;
+    }
+    if (best) {
+      wave.crest_x = x_last = profile[*best].x;
+      wave.crest_eta = profile[*best].eta;
+      t_last = time[k];
+      max_eta_last = wave.max_eta;
+    }
+    record.push_back(wave);
+  }
+  return record;
+}
+
+double still_water_depth(const PointCloud& liquid, double still_water_level) {
+  double lowest = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < liquid.position.size(); ++i)
+    lowest = std::min(lowest, liquid.position[i].y() - 0.5 * point_spacing(liquid, i));
+  return std::isfinite(lowest) ? still_water_level - lowest : kNaN;
 }
 
 WaveCrest first_wave_crest(const std::vector<double>& time, const std::vector<double>& eta,

@@ -64,8 +64,8 @@ post::PointCloud select(const post::PointCloud& all, const std::vector<bool>& ke
   return out;
 }
 
-// pre + solve + post of one run; then the leading wave of the free water (the post's
-// definition, on the liquid points that started as free water), written to
+// pre + solve + post of one run; then the leading wave of the free water (the post's tracker,
+// on the liquid points that started as free water), written to
 // <work>/<run>/leading_wave_free_water.csv.
 Measured run_one(const CaseContext& context, const Run& run) {
   const std::string variant = context.full ? "full" : "quick";
@@ -78,26 +78,37 @@ Measured run_one(const CaseContext& context, const Run& run) {
   const std::vector<bool> free = free_water(case_folder);
   const std::string liquid_stage =
       settings.liquid_stage.empty() ? settings.stage : settings.liquid_stage;
+  // The whole record first: the leading wave is tracked from output to output.
+  std::vector<double> times;
+  std::vector<std::vector<post::SurfaceBin>> profiles;
+  double depth = NAN;  // of the lake at rest, from the first output with free water
+  for (const auto& entry :
+       post::read_pvd(case_folder / "output" / (liquid_stage + "_liquid.pvd"))) {
+    const post::PointCloud water = select(post::read_liquid_points(entry.file, 2), free);
+    if (std::isnan(depth)) depth = post::still_water_depth(water, kStillWater);
+    times.push_back(entry.time);
+    profiles.push_back(post::surface_profile(water, settings.leading_wave_start,
+                                             2 * r.gauge_half_width, kStillWater));
+  }
+  const std::vector<post::LeadingWave> waves =
+      post::track_leading_wave(times, profiles, settings.leading_wave_start, kMinCrest, depth,
+                               post::case_gravity(case_folder));
+
   std::vector<std::vector<double>> rows;
   Measured m;
   double sum = 0;
   int count = 0;
-  for (const auto& entry :
-       post::read_pvd(case_folder / "output" / (liquid_stage + "_liquid.pvd"))) {
-    const post::PointCloud water = select(post::read_liquid_points(entry.file, 2), free);
-    const auto profile = post::surface_profile(water, settings.leading_wave_start,
-                                               2 * r.gauge_half_width, kStillWater);
-    const post::LeadingWave wave =
-        post::find_leading_wave(profile, settings.leading_wave_start, kMinCrest);
-    rows.push_back({entry.time, wave.crest_x, wave.crest_eta, wave.max_eta});
+  for (std::size_t k = 0; k < waves.size(); ++k) {
+    const post::LeadingWave& wave = waves[k];
+    rows.push_back({times[k], wave.crest_x, wave.crest_eta, wave.max_eta});
     if (!std::isfinite(wave.crest_eta)) continue;
-    if (entry.time >= 0.45 - 1e-9 && entry.time <= 0.55 + 1e-9) {
+    if (times[k] >= 0.45 - 1e-9 && times[k] <= 0.55 + 1e-9) {
       sum += wave.crest_eta;
       ++count;
     }
-    if (entry.time <= 0.8 + 1e-9 && !(wave.crest_eta <= m.peak)) {
+    if (times[k] <= 0.8 + 1e-9 && !(wave.crest_eta <= m.peak)) {
       m.peak = wave.crest_eta;
-      m.peak_time = entry.time;
+      m.peak_time = times[k];
     }
   }
   if (count > 0) m.h05 = sum / count;
