@@ -94,6 +94,7 @@ void run_case_b(const CaseContext& context, CaseResult& result);
 void run_case_c(const CaseContext& context, CaseResult& result);
 void run_hydrostatic_tank(const CaseContext& context, CaseResult& result);
 void run_dam_break(const CaseContext& context, CaseResult& result);
+void run_dam_break_late(const CaseContext& context, CaseResult& result);
 void run_terzaghi(const CaseContext& context, CaseResult& result);
 void run_seepage(const CaseContext& context, CaseResult& result);
 void run_sponge(const CaseContext& context, CaseResult& result);

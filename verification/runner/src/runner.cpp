@@ -46,6 +46,8 @@ const std::vector<CaseEntry>& all_cases() {
       {"case_c", "Case C: dry and saturated slides on rigid and erodible slopes", run_case_c},
       {"hydrostatic_tank", "Hydrostatic tank: still water stays still", run_hydrostatic_tank},
       {"dam_break", "Dam break on a dry bed against Ritter's solution", run_dam_break},
+      {"dam_break_late", "Dam break on a dry bed against Ritter's solution at t sqrt(g/H) = 7",
+       run_dam_break_late},
       {"speed_accuracy", "Speed against accuracy: the dam break's error vs wall time per knob",
        run_speed_accuracy},
       {"terzaghi", "Terzaghi 1D consolidation", run_terzaghi},
