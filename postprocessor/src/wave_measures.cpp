@@ -299,10 +299,22 @@ WaveCrest first_wave_crest(const std::vector<double>& time, const std::vector<do
   size_t k = 0;
   while (k < e.size() && !(e[k] > onset)) ++k;
   if (k == e.size()) return crest;
+  size_t first = k;  // the first sample of the wave: back to the rise through still water
+  while (first > 0 && e[first - 1] > 0) --first;
   size_t highest = k;
   for (; k < e.size() && !(e[k] < 0); ++k)
     if (e[k] > e[highest]) highest = k;
   crest.complete = k < e.size();
+  // The area: trapezoids over the wave's samples, and the triangles out to the interpolated
+  // crossings of still water on either side (a sample exactly at 0 is its own crossing).
+  auto crossing_triangle = [&](size_t inside, size_t outside) {
+    const double rise = e[inside] - e[outside];
+    return rise > 0 ? 0.5 * e[inside] * std::abs(t[inside] - t[outside]) * e[inside] / rise : 0.0;
+  };
+  crest.area = 0;
+  for (size_t i = first; i + 1 < k; ++i) crest.area += 0.5 * (e[i] + e[i + 1]) * (t[i + 1] - t[i]);
+  if (first > 0) crest.area += crossing_triangle(first, first - 1);
+  if (crest.complete) crest.area += crossing_triangle(k - 1, k);
   crest.time = t[highest];
   crest.height = e[highest];
   if (highest > 0 && highest + 1 < e.size()) {

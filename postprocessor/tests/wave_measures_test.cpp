@@ -284,6 +284,27 @@ TEST(FirstWaveCrest, IsTheHighestSampleOfTheFirstWaveNotItsFirstWiggle) {
   EXPECT_NEAR(crest.time, 0.6214286, 1e-7);
 }
 
+TEST(FirstWaveCrest, AreaIsTheIntegralOfTheFirstWaveBetweenItsStillWaterCrossings) {
+  // A piecewise linear wave: crossings of still water at 0.5 s (between -0.01 and 0.01) and
+  // at 3.5 s; trapezoids 0.0025 + 0.02 + 0.02 + 0.0025 = 0.045 m s. The second wave after it
+  // is not part of the first.
+  const WaveCrest linear =
+      first_wave_crest({0, 1, 2, 3, 4, 5, 6}, {-0.01, 0.01, 0.03, 0.01, -0.01, 0.02, -0.01}, 0.001);
+  EXPECT_TRUE(linear.complete);
+  EXPECT_NEAR(linear.area, 0.045, 1e-15);
+  // A half sine of amplitude a and duration d sampled every d / 200: 2 a d / pi, to the
+  // trapezoids' (pi / 200)^2 / 12 relative error.
+  const double a = 0.04, d = 0.5;
+  std::vector<double> t, eta;
+  for (int i = -3; i <= 203; ++i) {
+    t.push_back(0.2 + i * d / 200);
+    eta.push_back(i < 0 || i > 200 ? -0.001 : a * std::sin(std::numbers::pi * i / 200.0));
+  }
+  const WaveCrest sine = first_wave_crest(t, eta, 0.001);
+  EXPECT_NEAR(sine.area, 2 * a * d / std::numbers::pi, 2 * a * d / std::numbers::pi * 3e-5);
+  EXPECT_NEAR(sine.height, a, 1e-12);
+}
+
 TEST(FirstWaveCrest, BelowTheOnsetIsNoWaveAndARiseCutOffIsIncomplete) {
   const WaveCrest none = first_wave_crest({0, 1, 2, 3}, {0.0002, 0.0009, 0.0004, 0.0}, 0.001);
   EXPECT_TRUE(std::isnan(none.time) && std::isnan(none.height));
@@ -293,6 +314,9 @@ TEST(FirstWaveCrest, BelowTheOnsetIsNoWaveAndARiseCutOffIsIncomplete) {
   EXPECT_DOUBLE_EQ(rising.height, 0.03);
   EXPECT_DOUBLE_EQ(rising.time, 3.0);
   EXPECT_FALSE(rising.complete);
+  // Its area so far: from the first sample (at still water) to the last.
+  EXPECT_NEAR(rising.area, 0.005 + 0.015 + 0.025, 1e-15);
+  EXPECT_TRUE(std::isnan(none.area));
 }
 
 }  // namespace

@@ -26,6 +26,7 @@ struct Kind {
 constexpr Kind kKinds[] = {
     {"gauge_max", "gauges.csv", nullptr, Reduction::kMax, Kind::kGauges},
     {"gauge_first_crest", "gauges.csv", nullptr, Reduction::kFirstCrest, Kind::kGauges},
+    {"gauge_first_wave_area", "gauges.csv", nullptr, Reduction::kFirstWaveArea, Kind::kGauges},
     {"leading_wave_max", "leading_wave.csv", "crest_height", Reduction::kMax, Kind::kLeadingWave},
     {"front_travel_final", "runout.csv", "front_travel", Reduction::kLast, Kind::kSlide},
     {"front_travel_max", "runout.csv", "front_travel", Reduction::kMax, Kind::kSlide},
@@ -55,6 +56,10 @@ std::vector<std::string> split(const std::string& line) {
 }
 
 }  // namespace
+
+std::string measure_unit(const std::string& name) {
+  return name.substr(0, name.find(':')) == "gauge_first_wave_area" ? "m s" : "m";
+}
 
 PostContent post_content(const toml::table& scene) {
   PostContent content;
@@ -215,8 +220,11 @@ double take_measure(const Measure& measure, const std::filesystem::path& post_fo
       return best;
     }
     case Reduction::kFirstCrest:
-      return post::first_wave_crest(table.column("time", file.string()), values, kCrestOnset)
-          .height;
+    case Reduction::kFirstWaveArea: {
+      const post::WaveCrest wave =
+          post::first_wave_crest(table.column("time", file.string()), values, kCrestOnset);
+      return measure.reduction == Reduction::kFirstCrest ? wave.height : wave.area;
+    }
   }
   return NAN;
 }

@@ -288,6 +288,8 @@ bool write_plot(const SweepResult& result, const SweepDefinition& definition,
   for (size_t m = 0; m < result.measures.size(); ++m)
     add(first_measure + static_cast<int>(m), result.measures[m]);
   std::string ylabel = "measure (m)";
+  for (const std::string& m : result.measures)
+    if (measure_unit(m) != "m") ylabel = "measure (m; " + measure_unit(m) + " for " + m + ")";
   if (result.measures.empty()) {
     add(first_measure, "wall time of the run");
     ylabel = "wall time (s)";
@@ -712,7 +714,7 @@ std::string format_table(const SweepResult& result) {
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> header{"run"};
   header.insert(header.end(), result.labels.begin(), result.labels.end());
-  for (const std::string& m : result.measures) header.push_back(m + " (m)");
+  for (const std::string& m : result.measures) header.push_back(m + " (" + measure_unit(m) + ")");
   header.insert(header.end(), {"wall time", "status"});
   rows.push_back(header);
   for (const RunRecord& r : result.runs) {

@@ -61,6 +61,16 @@ TEST(Measures, ReadFromThePostTables) {
   EXPECT_DOUBLE_EQ(take_measure(measures[4], post), 0.25);
   EXPECT_DOUBLE_EQ(take_measure(measures[5], post), 0.25);
 
+  // The area of G1's first wave: the trapezoid 0.1-0.2 s and the triangle out to its fall
+  // through still water between 0.2 s (0.012) and 0.3 s (-0.001); the blank first row is no
+  // water, not a crossing.
+  const auto area = parse_measures({"gauge_first_wave_area:G1"}, content, "scene.toml");
+  ASSERT_EQ(area.size(), 1u);
+  EXPECT_NEAR(take_measure(area[0], post),
+              0.5 * (0.002 + 0.012) * 0.1 + 0.5 * 0.012 * 0.1 * 0.012 / 0.013, 1e-15);
+  EXPECT_EQ(measure_unit(area[0].name), "m s");
+  EXPECT_EQ(measure_unit(measures[0].name), "m");
+
   // A table that was not written names its file.
   const auto wall = parse_measures({"wall_height_final"}, content, "scene.toml");
   EXPECT_NE(input_error_message([&] { take_measure(wall[0], post); }).find("wall_height.csv"),

@@ -279,8 +279,14 @@ double still_water_depth(const PointCloud& liquid, double still_water_level);
 // crest may be still to come). time and height NaN when no sample exceeds `onset`.
 // A wiggle on the rising flank, or a dip of the crest's plateau, is inside the wave and
 // changes nothing: a "first local maximum" would stop on it.
+// `area` is the integral of eta over the whole first wave, from the record's last rise through
+// still water before the onset to its next fall below it (both crossings interpolated between
+// samples; trapezoids in between), in m s. Times the wave's celerity it is the wave's volume
+// per unit width. The crest of a steep, noisy front is one sample of it; the area sums every
+// sample, and converges where the crest does not (user manual, section 3, Case B).
 struct WaveCrest {
   double time = NAN, height = NAN;
+  double area = NAN;  // m s
   bool complete = false;
 };
 WaveCrest first_wave_crest(const std::vector<double>& time, const std::vector<double>& eta,

@@ -5,6 +5,8 @@
 //   gauge_max[:GAUGE]          highest eta at the gauge over the run (gauges.csv)
 //   gauge_first_crest[:GAUGE]  height of the first wave crest at the gauge (gauges.csv; the
 //                              rule is at kCrestOnset below)
+//   gauge_first_wave_area[:GAUGE]  integral of eta over that first wave, in m s (times the
+//                              wave's celerity: its volume per unit width)
 //   leading_wave_max           highest crest_height of the leading wave (leading_wave.csv)
 //   front_travel_final         front_travel at the last output (runout.csv)
 //   front_travel_max           highest front_travel (runout.csv)
@@ -12,8 +14,8 @@
 //   wall_height_max            highest wall_height (wall_height.csv)
 //
 // A gauge measure without :GAUGE stands for one measure per gauge of the scene. All measures
-// are lengths in m. A measure without a value (no water ever reached the gauge, no crest, a
-// blank last row) is NaN, a blank cell in sweep.csv.
+// but gauge_first_wave_area are lengths in m. A measure without a value (no water ever reached the
+// gauge, no crest, a blank last row) is NaN, a blank cell in sweep.csv.
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -23,7 +25,7 @@
 
 namespace lituya::sweep {
 
-enum class Reduction { kLast, kMax, kFirstCrest };
+enum class Reduction { kLast, kMax, kFirstCrest, kFirstWaveArea };
 
 struct Measure {
   std::string name;    // the sweep.csv column, e.g. "gauge_first_crest:G1"
@@ -44,6 +46,10 @@ PostContent post_content(const toml::table& scene);
 
 // The measure names a user may give, for messages.
 std::string measure_list();
+
+// The unit of a measure's values, from its name ("gauge_first_wave_area:X1" -> "m s"): "m"
+// for all others.
+std::string measure_unit(const std::string& name);
 
 // Expands and checks the measures given by the user (each "KIND" or "KIND:GAUGE") against the
 // scene's [post]. InputError naming `scene_file` when a measure needs a table the scene does
