@@ -288,8 +288,10 @@ bool write_plot(const SweepResult& result, const SweepDefinition& definition,
   for (size_t m = 0; m < result.measures.size(); ++m)
     add(first_measure + static_cast<int>(m), result.measures[m]);
   std::string ylabel = "measure (m)";
+  // One axis for all measures: name the other unit when one of them has it.
   for (const std::string& m : result.measures)
-    if (measure_unit(m) != "m") ylabel = "measure (m; " + measure_unit(m) + " for " + m + ")";
+    if (measure_unit(m) != "m")
+      ylabel = "measure (m; " + measure_unit(m) + " for " + m.substr(0, m.find(':')) + ")";
   if (result.measures.empty()) {
     add(first_measure, "wall time of the run");
     ylabel = "wall time (s)";
