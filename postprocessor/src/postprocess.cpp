@@ -366,11 +366,13 @@ bool measure_water(const PostSettings& settings, const WaterInput& input, int di
 
   // The leading wave is tracked over the whole record once it is read: one profile per output.
   std::vector<std::vector<SurfaceBin>> wave_profiles;
-  double depth = NAN;  // of the still water, from the first output with water (the lake at rest)
+  double depth = NAN;  // of the still water, from the first output with water (the lake at rest),
+                       // for the tracker's speed bound
   for (size_t k = 0; k < series.size(); ++k) {
     const PointCloud liquid =
         free_water(read_liquid_points(series[k].file, dimension), settings.surface_min_porosity);
-    if (std::isnan(depth)) depth = still_water_depth(liquid, settings.still_water_level);
+    if (settings.leading_wave && std::isnan(depth))
+      depth = still_water_depth(liquid, settings.still_water_level);
     result.liquid_time.push_back(series[k].time);
     for (size_t g = 0; g < gauges; ++g)
       result.gauge_eta[g].push_back(gauge_elevation(liquid, settings.gauges[g], input.half_width,
