@@ -140,7 +140,8 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
 template <int dim>
 void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
                        std::vector<Eigen::Matrix<double, dim, 1>>& velocity,
-                       const std::vector<double>* pore_pressure_push, bool coulomb) {
+                       const std::vector<Eigen::Matrix<double, dim, 1>>* wall_pore_pressure_push,
+                       bool coulomb) {
   using Vec = Eigen::Matrix<double, dim, 1>;
   for (int pass = 0; pass < 2; ++pass) {
     for (const NodalConstraint<dim>* c : active) {
@@ -164,19 +165,25 @@ void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
             Vec& v = velocity[c->nodes[k]];
             const Vec& n = c->normal[k];
             const double approach = v.dot(n);
-            if (approach <= 0) continue;  // separating: the wall does not pull
-            Vec tangential = v - approach * n;
+            // The wall's reaction to the pore pressure on the grains is given back once (the
+            // first pass; the second only mends corners), with no friction. What is left is
+            // the skeleton's own approach (header comment).
+            const double pore_part =
+                pass == 0 && wall_pore_pressure_push
+                    ? std::max(0.0, (*wall_pore_pressure_push)[c->nodes[k]].dot(n))
+                    : 0.0;
+            const double skeleton = approach - pore_part;
+            const Vec tangential = v - approach * n;
+            if (skeleton <= 0) {
+              // Separating: the wall does not pull. Saturated grains lift off at what their
+              // skeleton gives them once the wall has pushed back the pore pressure.
+              if (pore_part > 0) v = tangential + skeleton * n;
+              continue;
+            }
             const double slip = tangential.norm();
-            // Coulomb: the tangential impulse is at most mu times the normal impulse, which
-            // is m * approach; stick if that is enough to stop the slip. Of the normal
-            // impulse, the part the wall gives against the pore pressure on the grains
-            // carries no friction.
-            const double effective =
-                pore_pressure_push
-                    ? std::clamp(approach - (*pore_pressure_push)[c->nodes[k]] * c->area[k], 0.0,
-                                 approach)
-                    : approach;
-            const double reduction = coulomb ? c->friction * effective : 0.0;
+            // Coulomb: the tangential impulse is at most mu times the normal impulse, m times
+            // the skeleton's approach; stick if that is enough to stop the slip.
+            const double reduction = coulomb ? c->friction * skeleton : 0.0;
             v = slip > reduction ? Vec(tangential * (1.0 - reduction / slip)) : Vec::Zero();
           }
           break;
@@ -194,8 +201,10 @@ template NodalConstraint<3> make_constraint<3>(const BoundaryCondition&,
                                                const std::vector<std::array<int, 3>>&,
                                                const Mesh<3>&, const std::string&);
 template void apply_constraints<2>(const std::vector<const NodalConstraint<2>*>&,
-                                   std::vector<Eigen::Vector2d>&, const std::vector<double>*, bool);
+                                   std::vector<Eigen::Vector2d>&,
+                                   const std::vector<Eigen::Vector2d>*, bool);
 template void apply_constraints<3>(const std::vector<const NodalConstraint<3>*>&,
-                                   std::vector<Eigen::Vector3d>&, const std::vector<double>*, bool);
+                                   std::vector<Eigen::Vector3d>&,
+                                   const std::vector<Eigen::Vector3d>*, bool);
 
 }  // namespace lituya::solver

@@ -371,7 +371,7 @@ std::size_t Simulation<dim>::storage_bytes() const {
     bytes +=
         water_.bytes() + liquid_flux_divergence_.size() * sizeof(double) +
         static_cast<std::size_t>(coupling_.threads()) * nodes * (2 * sizeof(double) + sizeof(Vec)) +
-        nodes * 3 * sizeof(double);
+        nodes * (2 * sizeof(double) + sizeof(Vec));
   return bytes;
 }
 

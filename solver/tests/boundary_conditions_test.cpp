@@ -100,4 +100,42 @@ TEST(BoundaryConditions, RollerGroupHoldsABoxVertexIn3D) {
   check_roller_corner<3>({0, 1, 2});
 }
 
+// A Coulomb contact on a saturated soil (two-phase cases): the wall gives back the grains'
+// share of the pore pressure without friction; the rest of the grains' approach is the
+// skeleton's own. Bed y = 0 (outward normal -y), mu = 0.5, velocities in m/s after the step's
+// forces, the pore-pressure push 0.1 m/s into the wall. Every expected value is exact.
+TEST(BoundaryConditions, SaturatedContactTakesFrictionFromTheSkeletonAndLetsItLiftOff) {
+  using Vec = Eigen::Vector2d;
+  NodalConstraint<2> bed;
+  bed.type = BoundaryType::kContact;
+  bed.friction = 0.5;
+  bed.nodes = {0, 1, 2, 3};
+  bed.normal.assign(4, Vec(0.0, -1.0));
+  bed.area.assign(4, 0.1);
+  std::vector<Vec> velocity = {Vec(1.0, -0.3), Vec(1.0, -0.05), Vec(0.05, -0.3), Vec(1.0, 0.2)};
+  const std::vector<Vec> push(4, Vec(0.0, -0.1));
+  apply_constraints<2>({&bed}, velocity, &push);
+  // Pressed: the skeleton approaches at 0.3 - 0.1 = 0.2, the slip loses mu 0.2 = 0.1.
+  EXPECT_DOUBLE_EQ(velocity[0](0), 0.9);
+  EXPECT_EQ(velocity[0](1), 0.0);
+  // The grains approach at 0.05, less than the pore pressure's 0.1: the skeleton pulls away
+  // (no tension at the wall), so no friction, and the node leaves the wall at 0.05.
+  EXPECT_EQ(velocity[1](0), 1.0);
+  EXPECT_DOUBLE_EQ(velocity[1](1), 0.05);
+  // Sticks: mu 0.2 = 0.1 is more than the slip of 0.05.
+  EXPECT_EQ(velocity[2], Vec::Zero());
+  // Already leaving the wall: the pore pressure's reaction still pushes it off.
+  EXPECT_EQ(velocity[3](0), 1.0);
+  EXPECT_DOUBLE_EQ(velocity[3](1), 0.3);
+  // A dry soil (no push): the friction acts on the whole approach, and a leaving node is free.
+  std::vector<Vec> dry = {Vec(1.0, -0.3), Vec(1.0, 0.2)};
+  bed.nodes = {0, 1};
+  bed.normal.resize(2);
+  bed.area.resize(2);
+  apply_constraints<2>({&bed}, dry);
+  EXPECT_DOUBLE_EQ(dry[0](0), 0.85);
+  EXPECT_EQ(dry[0](1), 0.0);
+  EXPECT_EQ(dry[1], Vec(1.0, 0.2));
+}
+
 }  // namespace

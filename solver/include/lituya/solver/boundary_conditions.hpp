@@ -38,17 +38,24 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
 
 // Applies the active constraints to nodal velocities (twice over, so that a node on two
 // non-orthogonal walls satisfies both). Tractions are skipped (they are forces).
-// `pore_pressure_push` (may be null; two-phase cases): per node, dt (1 - n) p / m_s, the speed
-// per unit wall area at which the wall's reaction to the grains' share of the pore pressure
-// pushes them. A contact wall takes that part, times the node's wall area, out of the normal
-// impulse that bounds the friction: Coulomb friction on a saturated soil acts on the effective
-// normal stress only (sigma'_n = sigma_n - p, eq. 14).
+// `wall_pore_pressure_push` (may be null; two-phase cases): per contact node, the velocity
+// dt (1 - n) W / m_s that the wall's reaction W to the grains' share of the pore pressure gives
+// them. A contact wall always gives it back (the water between the grains carries the pressure
+// to the wall, also where the grains lift off), without friction; what is left of the grains'
+// approach is the skeleton's own push. It presses (the wall stops it, friction mu times it) or
+// pulls away (the grains lift off: an effective stress has no tension at a wall). Coulomb
+// friction on a saturated soil thus acts on the effective normal stress only (sigma'_n =
+// sigma_n - p, eq. 14). Until December 2026 the wall held every node whose grains approached
+// it and took friction from the positive part of approach less push only: where the skeleton
+// pulled, its tension was lost instead of carried as lift-off, and a ringing block on a
+// submerged incline got twice its effective-stress friction (verification/saturated_block).
 // `coulomb` false (the liquid phase): a contact wall stops penetration but has no friction;
 // water slides along a wall, Coulomb's law is for the grains.
 template <int dim>
-void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
-                       std::vector<Eigen::Matrix<double, dim, 1>>& velocity,
-                       const std::vector<double>* pore_pressure_push = nullptr,
-                       bool coulomb = true);
+void apply_constraints(
+    const std::vector<const NodalConstraint<dim>*>& active,
+    std::vector<Eigen::Matrix<double, dim, 1>>& velocity,
+    const std::vector<Eigen::Matrix<double, dim, 1>>* wall_pore_pressure_push = nullptr,
+    bool coulomb = true);
 
 }  // namespace lituya::solver

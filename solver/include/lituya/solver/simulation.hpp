@@ -185,6 +185,7 @@ class Simulation {
   void setup_liquid();
   void liquid_to_nodes(Transfer what);
   void two_phase_nodal_update(double dt, double damping);
+  Vec wall_pore_pressure_push(int node, double dt) const;
   void remap_liquid_momentum();
   void update_liquid_and_relocate(double dt);
   // Pressure-projection stabilisation (pressure_projection.cpp); returns CG iterations.
@@ -218,8 +219,10 @@ class Simulation {
   LiquidPhase water_;
   detail::NodalScatter<CouplingSums> coupling_;
   std::vector<double> node_porosity_;
-  std::vector<double> node_pressure_;                      // volume-weighted nodal liquid pressure
-  std::vector<double> node_pore_pressure_push_;            // dt (1 - n) p / m_s (contact friction)
+  std::vector<double> node_pressure_;  // volume-weighted nodal liquid pressure
+  // Per contact-wall node, dt (1 - n) W / m_s: the velocity the wall's reaction to the grains'
+  // share of the pore pressure gives them (W: the wall part of the nodal pore-pressure force).
+  std::vector<Vec> node_wall_pore_pressure_push_;
   std::vector<Vec> grid_velocity_, grid_liquid_velocity_;  // map_to_grid (output only)
   std::vector<double> node_mesh_volume_;        // integral of N_i over the mesh (lumped volume)
   std::vector<double> liquid_flux_divergence_;  // per liquid point, div((1-n) v_s + n v_w)
