@@ -326,19 +326,23 @@ TEST(TwoPhase, SaturatedLayerSlidesAtTheEffectiveStressFriction) {
   // bed pressure instead of the nodal one changes nothing (0.6735), nor does removing the
   // clamp at zero effective impulse, nor friction-free MUSL remaps. Held as a regression
   // bound: above 0.65 (a friction on total stress fails it) and at most the closed form + 3 %.
-  // December 2026, the contact law that lets the skeleton lift off and takes the wall's pore
-  // pressure from the weak form's wall term (boundary_conditions.hpp): 0.6665 m/s (8.4 % low;
-  // verification/saturated_block, with negligible drag, now passes). Here the drag locks the
-  // phases: the implicit drag runs before the walls, so the grains' approach carries
-  // m_s / (m_s + m_w) of the mixture's push, and the friction acts on 0.8 sigma'_n + 0.2 p
-  // (saturated_block/known-failure.md, point 5); with the water table at the surface that is
-  // sigma'_n on average; why the layer still slides 8 % slow (the bed row's pressure rings,
-  // above) is not yet measured.
+  // December 2026: the contact law lets the skeleton lift off, takes the wall's pore pressure
+  // from the weak form's wall term, and acts before the drag (boundary_conditions.hpp,
+  // two_phase.cpp): 0.6048 m/s, 16.9 % low. The former 0.6725 was right by coincidence: the
+  // drag ran before the walls, so the friction acted on 0.8 sigma'_n + 0.2 p, which equals
+  // sigma'_n only where p = sigma'_n, as on this bed; a block of the same fine sand under 0.4 m
+  // of water then slid at a(mu) / a(0) = 0.308 against 1 - mu / tan(theta) = 0.571, and now at
+  // 0.528 (verification/saturated_block/history.md). Measured here: at the release the
+  // skeleton's push on the bed is 840.8 N/m against sigma'_n L = 841 N/m; while the layer
+  // slides it grows to 1.3 times that (the bed row's pore pressure falls below hydrostatic)
+  // and the nodal law's positive part to 1.7-1.8 times (the ringing rectified). Neither is
+  // understood yet. The lower bound moved from 0.65 to 0.59 for that documented reason; it
+  // still fails a friction on the total stress (0.560).
   const double theta = 30 * std::acos(-1.0) / 180, mu = 0.3, t = 0.2;
   const double rho_sat = 0.6 * 2650 + 0.4 * 1000;
   const double a = 9.81 * (std::sin(theta) - mu * std::cos(theta) * (rho_sat - 1000) / rho_sat);
   const double speed = saturated_layer_speed(30, mu, t);
-  EXPECT_GT(speed, 0.65);
+  EXPECT_GT(speed, 0.59);
   EXPECT_LT(speed, 1.03 * a * t);
 }
 
