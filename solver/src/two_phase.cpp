@@ -288,8 +288,8 @@ void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
 // The volume integral is taken hydrostatic, rho_w g over the node's wet volume (its pore water
 // W_i / n_i, at most the node's volume; zero in a dry soil). Not from the gradient of the
 // nodal pressures: at the wall row those are one-sided averages, low by about rho_w g h / 3
-// (TwoPhase.SaturatedBedUnderWaterStaysAtRest), which took 7 % off the saturated block's
-// acceleration (1.371 against 1.423 m/s2). Using the nodal mean pressure p_i A for W instead (until
+// (TwoPhase.SaturatedBedUnderWaterStaysAtRest), which took 3.5 % off the saturated block's
+// acceleration (1.371 against 1.421 m/s2). Using the nodal mean pressure p_i A for W instead (until
 // December 2026) counted the pressure half a cell inside the soil: +3.8 % of the effective
 // stress of verification/saturated_block at 0.02 m cells.
 template <int dim>
