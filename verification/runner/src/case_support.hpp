@@ -87,6 +87,7 @@ using CaseFunction = std::function<void(const CaseContext&, CaseResult&)>;
 void run_bar_vibration(const CaseContext& context, CaseResult& result);
 void run_sliding_block(const CaseContext& context, CaseResult& result);
 void run_saturated_block(const CaseContext& context, CaseResult& result);
+void run_saturated_block_fine(const CaseContext& context, CaseResult& result);
 void run_gravity_column(const CaseContext& context, CaseResult& result);
 void run_column_collapse(const CaseContext& context, CaseResult& result);
 void run_case_a(const CaseContext& context, CaseResult& result);
