@@ -103,12 +103,9 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
   std::sort(order.begin(), order.end());
   for (int n : order) {
     const std::vector<Vec>& node_walls = walls[n];
-    // Each facet's normal has the facet's size as its length, and a linear facet shares its
-    // area equally between its dim nodes (exact on a flat wall).
-    auto push = [&](const Vec& normal_sum, const Vec& normal) {
+    auto push = [&](const Vec& normal) {
       constraint.nodes.push_back(n);
       constraint.normal.push_back(normal);
-      constraint.area.push_back(normal_sum.norm() / dim);
       if (bc.type == BoundaryType::kTraction) constraint.force.push_back(force_sum[n]);
     };
     if (bc.type == BoundaryType::kRoller) {
@@ -122,16 +119,16 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
         if (normal.norm() < 1e-6) continue;
         normal.normalize();
         basis.push_back(normal);
-        push(wall, normal);
+        push(normal);
       }
     } else if (bc.type == BoundaryType::kContact) {
       // A contact wall keeps each wall's own normal (one-sided, with friction).
-      for (const Vec& wall : node_walls) push(wall, wall.normalized());
+      for (const Vec& wall : node_walls) push(wall.normalized());
     } else {
       // The other types do not use the direction of the wall: one entry per node.
       Vec sum = Vec::Zero();
       for (const Vec& wall : node_walls) sum += wall;
-      push(sum, sum.normalized());
+      push(sum.normalized());
     }
   }
   return constraint;

@@ -277,7 +277,7 @@ void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
   // 4. The walls again (the drag mixes the phases' normal velocities where only one was
   // held), with the plain laws, and the accelerations.
   finish_nodal_update(solid_, dt, threads_);
-  finish_nodal_update<dim>(water_, dt, threads_, nullptr, false);
+  finish_nodal_update<dim>(water_, dt, threads_, false);
 }
 
 // The wall's reaction to the grains' share of the pore pressure at a wall node, as the velocity

@@ -111,7 +111,6 @@ TEST(BoundaryConditions, SaturatedContactTakesFrictionFromTheSkeletonAndLetsItLi
   bed.friction = 0.5;
   bed.nodes = {0, 1, 2, 3};
   bed.normal.assign(4, Vec(0.0, -1.0));
-  bed.area.assign(4, 0.1);
   std::vector<Vec> velocity = {Vec(1.0, -0.3), Vec(1.0, -0.05), Vec(0.05, -0.3), Vec(1.0, 0.2)};
   const std::vector<Vec> push(4, Vec(0.0, -0.1));
   apply_constraints<2>({&bed}, velocity, &push);
@@ -131,7 +130,6 @@ TEST(BoundaryConditions, SaturatedContactTakesFrictionFromTheSkeletonAndLetsItLi
   std::vector<Vec> dry = {Vec(1.0, -0.3), Vec(1.0, 0.2)};
   bed.nodes = {0, 1};
   bed.normal.resize(2);
-  bed.area.resize(2);
   apply_constraints<2>({&bed}, dry);
   EXPECT_DOUBLE_EQ(dry[0](0), 0.85);
   EXPECT_EQ(dry[0](1), 0.0);

@@ -31,12 +31,11 @@ InclineTravel run_block(const CaseContext& context, const std::string& name,
 
 // Friction alone: the same block without friction has the same mass, buoyancy and displaced
 // water, so a(mu) / a(0) = 1 - mu / tan(theta) whatever they are.
-double add_friction_ratio_check(CaseResult& result, const InclineTravel& slides,
-                                const InclineTravel& free) {
+void add_friction_ratio_check(CaseResult& result, const InclineTravel& slides,
+                              const InclineTravel& free) {
   const double measured = fitted_acceleration(slides) / fitted_acceleration(free);
   const double ratio = 1.0 - kMuSlide / std::tan(kTheta);
   add_check(result, "a(mu = 0.2) / a(mu = 0)", "-", measured, ratio, 0.02 * ratio);
-  return measured;
 }
 
 // travel.csv and travel.png: each run's travel, and the closed forms where there are some

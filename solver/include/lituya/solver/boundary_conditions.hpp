@@ -22,10 +22,9 @@ struct NodalConstraint {
   double friction = 0;
   std::vector<int> directions;  // fixity
   std::vector<int> nodes;
-  std::vector<Vec> normal;   // per node: unit outward normal of the group's facets
-  std::vector<double> area;  // per node: its share of the group's facet area (m in 2D, m2 in 3D)
-  std::vector<Vec> force;    // traction only: per node, the integral of N t over the facets (N)
-  double ramp_time = 0;      // traction only: s, the load rises linearly over it
+  std::vector<Vec> normal;  // per node: unit outward normal of the group's facets
+  std::vector<Vec> force;   // traction only: per node, the integral of N t over the facets (N)
+  double ramp_time = 0;     // traction only: s, the load rises linearly over it
 };
 
 // Builds the node set and outward normals of one boundary condition from its group's facets.

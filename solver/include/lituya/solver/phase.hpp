@@ -161,13 +161,12 @@ void apply_local_damping(Vec& force, const Vec& velocity, double damping) {
 
 // Step 2, the end of the nodal update: node_velocity holds the new velocity and
 // node_acceleration the old one; applies the velocity conditions, then a = (v_new - v_old)/dt.
-// `wall_pore_pressure_push` and `coulomb`: see apply_constraints (boundary_conditions.hpp).
+// The plain laws (no pore-pressure push: two_phase.cpp applies that before the drag);
+// `coulomb`: see apply_constraints (boundary_conditions.hpp).
 template <int dim, class Points, class Sums>
-void finish_nodal_update(
-    Phase<dim, Points, Sums>& phase, double dt, int threads,
-    const std::vector<Eigen::Matrix<double, dim, 1>>* wall_pore_pressure_push = nullptr,
-    bool coulomb = true) {
-  apply_constraints<dim>(phase.constraints, phase.node_velocity, wall_pore_pressure_push, coulomb);
+void finish_nodal_update(Phase<dim, Points, Sums>& phase, double dt, int threads,
+                         bool coulomb = true) {
+  apply_constraints<dim>(phase.constraints, phase.node_velocity, nullptr, coulomb);
   const std::size_t n_nodes = phase.node_velocity.size();
 #pragma omp parallel for num_threads(threads) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i)
