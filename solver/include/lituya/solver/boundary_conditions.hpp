@@ -38,7 +38,8 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
 // Applies the active constraints to nodal velocities (twice over, so that a node on two
 // non-orthogonal walls satisfies both). Tractions are skipped (they are forces).
 // `wall_pore_pressure_push` (may be null; two-phase cases): per contact node, the velocity
-// dt (1 - n) W / m_s that the wall's reaction W to the grains' share of the pore pressure gives
+// dt (1 - s) W / m_s (1 - s the grains' share of the pore-pressure force; two_phase.cpp) that the
+// wall's reaction W to the grains' share of the pore pressure gives
 // them. A contact wall always gives it back (the water between the grains carries the pressure
 // to the wall, also where the grains lift off), without friction; what is left of the grains'
 // approach is the skeleton's own push. It presses (the wall stops it, friction mu times it) or

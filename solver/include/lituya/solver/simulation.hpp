@@ -150,10 +150,12 @@ class Simulation {
   // Nodal sums of the solid points that only the coupling needs (two-phase cases only).
   struct CouplingSums {
     std::vector<double> solid_volume;       // sum N V (1 - n) of the solid points
+    std::vector<double> soil_volume;        // sum N V of the solid points (grains and pores)
     std::vector<double> drag;               // sum N V C, C the drag coefficient of eq. (23)
     std::vector<Vec> grain_pressure_force;  // sum p V (1 - n) grad N over the grains
     void assign(std::size_t n) {
       solid_volume.assign(n, 0.0);
+      soil_volume.assign(n, 0.0);
       drag.assign(n, 0.0);
       grain_pressure_force.assign(n, Vec::Zero());
     }
@@ -186,6 +188,8 @@ class Simulation {
   void liquid_to_nodes(Transfer what);
   void two_phase_nodal_update(double dt, double damping);
   Vec wall_pore_pressure_push(int node, double dt) const;
+  // The water's share of the nodal pore-pressure force (eqs. 15, 16; two_phase.cpp).
+  double pore_pressure_water_share(std::size_t node) const;
   void remap_liquid_momentum();
   void update_liquid_and_relocate(double dt);
   // Pressure-projection stabilisation (pressure_projection.cpp); returns CG iterations.
