@@ -317,6 +317,10 @@ struct CheckpointAccess {
     visit("liquid.porosity", s.water_.points.porosity, n_liquid);
     visit("liquid.shape", s.water_.shape, n_liquid);
     visit("liquid.node_velocity", s.water_.node_velocity, n_nodes);
+    // The drag's relative velocity is the pore water's (two_phase.cpp); the mean is what
+    // node_liquid_velocity() reports.
+    visit("liquid.pore_node_velocity", s.pore_water_velocity_, n_nodes);
+    visit("liquid.mean_node_velocity", s.mean_water_velocity_, n_nodes);
     // The pressure projection starts its iterations from its last nodal solution; empty until
     // the first projection.
     visit("liquid.projection_solution", s.projection_.solution, std::nullopt);

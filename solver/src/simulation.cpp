@@ -303,11 +303,19 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
 template <int dim>
 void Simulation<dim>::step(double dt, double damping) {
   points_to_nodes(Transfer::kMassMomentumForce);
-  if (has_liquid_) liquid_to_nodes(Transfer::kMassMomentumForce);
+  if (has_liquid_) liquid_to_nodes();
   if (!active_tractions_.empty()) apply_tractions();
   nodal_update(dt, damping);
   nodes_to_points(solid_, mesh_, dt, threads_);
-  if (has_liquid_) nodes_to_points(water_, mesh_, dt, threads_);
+  if (has_liquid_) {
+    // Each liquid point follows its own water: the pore water's field or the free water's.
+    const detail::NodalField<Vec> free_water{water_.node_velocity.data(),
+                                             water_.node_acceleration.data()};
+    const detail::NodalField<Vec> pore_water{pore_water_velocity_.data(),
+                                             pore_water_acceleration_.data()};
+    nodes_to_points(water_, mesh_, dt, threads_,
+                    [&](std::size_t q) { return liquid_in_soil_[q] ? pore_water : free_water; });
+  }
   if (musl_) remap_momentum();
   if (volumetric_smoothing_) smooth_volumetric_strain(dt);
   update_stress_and_relocate(dt);
@@ -334,7 +342,7 @@ void Simulation<dim>::map_to_grid() {
   for (std::size_t i = 0; i < n_nodes; ++i)
     grid_velocity_[i] = velocity_from_momentum(solid.momentum[i], solid.mass[i]);
   if (has_liquid_) {
-    liquid_to_nodes(Transfer::kMassMomentumForce);
+    liquid_to_nodes();
     const detail::LiquidSums<dim>& liquid = water_.nodal.sums();
     grid_liquid_velocity_.resize(n_nodes);
     for (std::size_t i = 0; i < n_nodes; ++i)
@@ -368,10 +376,11 @@ std::size_t Simulation<dim>::storage_bytes() const {
     bytes += point_volumetric_strain_.size() * sizeof(double) +
              static_cast<std::size_t>(smoothing_.threads()) * nodes * 2 * sizeof(double);
   if (has_liquid_)
-    bytes +=
-        water_.bytes() + liquid_flux_divergence_.size() * sizeof(double) +
-        static_cast<std::size_t>(coupling_.threads()) * nodes * (2 * sizeof(double) + sizeof(Vec)) +
-        nodes * (2 * sizeof(double) + sizeof(Vec));
+    bytes += water_.bytes() + liquid_flux_divergence_.size() * sizeof(double) +
+             static_cast<std::size_t>(coupling_.threads()) * nodes *
+                 (3 * sizeof(double) + 2 * sizeof(Vec)) +
+             nodes * (2 * sizeof(double) + 4 * sizeof(Vec)) +  // + pore water and mean fields
+             mesh_.cell_count() + water_.points.size();        // the pore water flags
   return bytes;
 }
 

@@ -337,9 +337,14 @@ TEST_F(Checkpoint, RefusesACheckpointItCannotContinue) {
   m = error([&] { read_checkpoint_header(file); });
   EXPECT_NE(m.find("not a Lituya checkpoint"), std::string::npos) << m;
   write_checkpoint(file, sim, header(0, std::nullopt), RunRecord{});
-  edit_bytes(file, [](std::string& b) { b[12] = 2; });  // after the magic and the byte order
+  edit_bytes(file, [](std::string& b) {  // after the magic and the byte order
+    b[12] = static_cast<char>(kCheckpointFormatVersion + 1);
+  });
   m = error([&] { read_checkpoint_header(file); });
-  EXPECT_NE(m.find("checkpoint format version 2; this Lituya"), std::string::npos) << m;
+  EXPECT_NE(m.find("checkpoint format version " + std::to_string(kCheckpointFormatVersion + 1) +
+                   "; this Lituya"),
+            std::string::npos)
+      << m;
 }
 
 TEST_F(Checkpoint, NewestIsTheOneFurthestIntoTheRun) {

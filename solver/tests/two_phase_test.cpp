@@ -745,4 +745,99 @@ TEST(TwoPhase, StillWaterIn3DStaysStill) {
   EXPECT_LT(v, 0.01 * std::sqrt(9.81 * 0.2));
 }
 
+// A square block of saturated fine sand, 0.1 m a side, released from rest in the middle of a
+// 1 m x 1 m tank of still water, 0.35 m under the surface (roller walls and bottom). Fine
+// grains (D = 0.1 mm, consolidation time far beyond the run) lock the grains and the pore
+// water, so the block is a body of density rho_sat = 1990 kg/m3 starting to sink through
+// inviscid water. At the start the flow is potential, and the body's acceleration is
+//     a(0) = g (rho_sat - rho_w) / (rho_sat + C_a rho_w),
+// C_a = 1.19 the added mass coefficient of a square section moving normal to a face (1.51
+// pi rho c^2 for a square of half side c; Blevins, Formulas for Natural Frequency and Mode
+// Shape, 1979, table 14-2), 3.054 m/s2 (4.880 without the added mass). Returns the mean
+// vertical acceleration of the grains, v(t) / t, over the first `time` seconds.
+double settling_block_acceleration(int cells_per_metre, double time) {
+  BoxScene<2> s;
+  s.domain_size = {1.0, 1.0};
+  s.cells = {cells_per_metre, cells_per_metre};
+  s.block_min = {0.45, 0.45};
+  s.block_max = {0.55, 0.55};
+  s.material = soil(1e-4);
+  s.material.youngs_modulus = 5e7;
+  s.gravity = {0.0, -9.81};
+  s.with_water = true;
+  s.water = paper_water();
+  s.water.bulk_modulus = 2.15e6;  // sound speed 46 m/s: the block's Mach number stays < 1e-3
+  s.water_min = {0.0, 0.0};
+  s.water_max = {1.0, 0.9};
+  for (const char* side : {"x-", "x+", "y-"})
+    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
+  Simulation<2> sim = make_box_simulation<2>(s);
+  sim.run_stage(dynamic_stage(time), nullptr);
+  return -mean_velocity(sim.points(), 1) / time;
+}
+
+TEST(TwoPhase, SinkingBlockOfLockedSoilFeelsThePotentialFlowAddedMass) {
+  // Tolerance 5 %: the walls and the free surface, 3.5 to 4.5 block sizes away, change the
+  // added mass by about 1 %; the block's surface is smeared over one cell (a tenth of its
+  // side here). MEASURED (December 2026), a(0.01 s) at 0.02 / 0.01 / 0.005 m cells: with one
+  // water velocity per node, 2.06 / 2.53 / 2.80 m/s2 (-33 / -17 / -8 %: the drag locked the
+  // free water of the cells around the block to it, a layer one cell thick carried along);
+  // with free and pore water as two fields that meet at the block's surface (two_phase.cpp),
+  // 2.68 / 3.02 / 3.07 m/s2 (-12 / -1.3 / +0.7 %; TwoPhase.DISABLED_SinkingBlockConvergence).
+  const double rho_sat = 0.6 * 2650 + 0.4 * 1000;
+  const double exact = 9.81 * (rho_sat - 1000) / (rho_sat + 1.19 * 1000);
+  EXPECT_NEAR(settling_block_acceleration(100, 0.01) / exact, 1.0, 0.05);
+}
+
+// Not run by default (1 min): the sinking block at 0.02, 0.01 and 0.005 m cells, printed for
+// the scientific manual's table (10.3). Run with --gtest_also_run_disabled_tests.
+TEST(TwoPhase, DISABLED_SinkingBlockConvergence) {
+  const double rho_sat = 0.6 * 2650 + 0.4 * 1000;
+  const double exact = 9.81 * (rho_sat - 1000) / (rho_sat + 1.19 * 1000);
+  for (int cells : {50, 100, 200}) {
+    const double a = settling_block_acceleration(cells, 0.01);
+    std::printf("h = %.4f m: a(0.01 s) = %.4f m/s2, %.4f of the potential flow's %.4f\n",
+                1.0 / cells, a, a / exact, exact);
+  }
+}
+
+TEST(TwoPhase, FreeWaterSlidesOverASoilAtRest) {
+  // Free water 0.1 m deep moving at 0.1 m/s over a saturated sand layer at rest, both 2 m
+  // long, no gravity (no pressure gradients): inviscid water keeps its momentum; the viscous
+  // layer of the real flow is sqrt(nu t) = 0.2 mm after 0.05 s, 0.2 % of the depth. Measured
+  // on the free water over the middle metre, away from the slab's ends (where the layer's
+  // corners take some of it: 3.4 % of the whole slab's momentum). Tolerance: 3 %. MEASURED
+  // (December 2026) at 0.025 m cells: with one water velocity per node, the free water kept
+  // 0.62 of its momentum (0.26 / 0.55 / 0.77 / 0.88 of its speed in the four cell rows up
+  // from the layer: the free water of the cells on the layer shared its nodes' velocity with
+  // the pore water, and the drag took it out); with the free and the pore water as two fields
+  // that slide past each other along the soil's surface (two_phase.cpp), 0.998 to 1.000.
+  BoxScene<2> s;
+  s.domain_size = {2.2, 0.3};  // the water moves 5 mm into the empty cells beyond x = 2 m
+  s.cells = {88, 12};
+  s.block_min = {0.0, 0.0};
+  s.block_max = {2.0, 0.1};
+  s.material = soil(1e-4);
+  s.gravity = {0.0, 0.0};
+  s.with_water = true;
+  s.water = paper_water();
+  s.water_min = {0.0, 0.0};
+  s.water_max = {2.0, 0.2};
+  s.boundaries.push_back({"y-", box_condition(BoundaryType::kRoller)});
+  Simulation<2> sim = make_box_simulation<2>(s);
+  auto& water = sim.liquid();
+  for (std::size_t q = 0; q < water.size(); ++q)
+    water.velocity[q] = Eigen::Vector2d(water.position[q](1) > 0.1 ? 0.1 : 0.0, 0.0);
+  Stage stage = dynamic_stage(0.05);
+  stage.boundaries = {"y-"};
+  sim.run_stage(stage, nullptr);
+  double mass = 0, momentum = 0;
+  for (std::size_t q = 0; q < water.size(); ++q)
+    if (water.position[q](1) > 0.1 && std::abs(water.position[q](0) - 1.0) < 0.5) {
+      mass += water.mass[q];
+      momentum += water.mass[q] * water.velocity[q](0);
+    }
+  EXPECT_NEAR(momentum / (0.1 * mass), 1.0, 0.03);
+}
+
 }  // namespace

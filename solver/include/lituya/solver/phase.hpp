@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -60,24 +61,31 @@ struct PhaseSums {
   static constexpr std::size_t kBytesPerNode = sizeof(double) + 2 * sizeof(Vec);
 };
 
-// The liquid's sums add its pressure terms (two_phase.cpp).
+// The liquid's sums add its pressure terms and the pore water's own share of mass, momentum
+// and force (two_phase.cpp: the pore water and the free water at a node are two velocity
+// fields; the free water's sums are the whole less the pore water's).
 template <int dim>
 struct LiquidSums : PhaseSums<dim> {
   using Vec = typename PhaseSums<dim>::Vec;
   std::vector<Vec> pressure_force;                          // sum V_w p grad N (eqs. 15, 16)
   std::vector<double> water_volume, water_volume_pressure;  // sum N V_w, sum N V_w p
+  std::vector<double> pore_mass;                            // the sums above of mass,
+  std::vector<Vec> pore_momentum, pore_force;               // momentum and force, pore water only
   void assign(std::size_t n) {
     PhaseSums<dim>::assign(n);
     pressure_force.assign(n, Vec::Zero());
     water_volume.assign(n, 0.0);
     water_volume_pressure.assign(n, 0.0);
+    pore_mass.assign(n, 0.0);
+    pore_momentum.assign(n, Vec::Zero());
+    pore_force.assign(n, Vec::Zero());
   }
   auto all() {
     return std::tie(this->mass, this->momentum, this->force, pressure_force, water_volume,
-                    water_volume_pressure);
+                    water_volume_pressure, pore_mass, pore_momentum, pore_force);
   }
   static constexpr std::size_t kBytesPerNode =
-      PhaseSums<dim>::kBytesPerNode + sizeof(Vec) + 2 * sizeof(double);
+      PhaseSums<dim>::kBytesPerNode + 3 * sizeof(Vec) + 3 * sizeof(double);
 };
 
 template <int dim, class Points, class Sums>
@@ -108,11 +116,14 @@ enum class Transfer { kMassMomentumForce, kMomentum };
 
 // Step 1: mass, momentum, weight and internal force -V sigma . grad N (the weak form of
 // div sigma, eq. 11 for the solid's effective stress; the viscous stress of eq. 17 for the
-// water). `extra(sums, k, nodes, shape, grad)` adds what only one phase puts on the nodes.
-template <int dim, class Points, class Sums, class Extra>
+// water). `extra_terms(sums, k, nodes, shape, grad)` adds what only one phase puts on the
+// nodes; `extra(sums, k, i, mass, momentum, force)` sees point k's share of the three sums at
+// its cell's i-th node (the liquid sums the pore water's share apart).
+template <int dim, class Points, class Sums, class ExtraTerms, class Extra = decltype(nullptr)>
 void scatter_to_nodes(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh,
                       const Eigen::Matrix<double, dim, 1>& gravity,
-                      const std::vector<Voigt6>& stress, Transfer what, Extra extra) {
+                      const std::vector<Voigt6>& stress, Transfer what, ExtraTerms extra_terms,
+                      Extra extra = nullptr) {
   using Vec = Eigen::Matrix<double, dim, 1>;
   Points& points = phase.points;
   const std::size_t n_points = points.size();
@@ -140,11 +151,14 @@ void scatter_to_nodes(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh,
         const Voigt6& sigma = stress[p];
         for (int i = 0; i <= dim; ++i) {
           const int node = nodes[i];
+          const Vec force = n(i) * weight - v * stress_dot(sigma, grad[i]);
           b.mass[node] += n(i) * m;
           b.momentum[node] += n(i) * momentum;
-          b.force[node] += n(i) * weight - v * stress_dot(sigma, grad[i]);
+          b.force[node] += force;
+          if constexpr (!std::is_null_pointer_v<Extra>)
+            extra(b, p, i, n(i) * m, n(i) * momentum, force);
         }
-        extra(b, p, nodes, n, grad);
+        extra_terms(b, p, nodes, n, grad);
       });
 }
 
@@ -173,12 +187,20 @@ void finish_nodal_update(Phase<dim, Points, Sums>& phase, double dt, int threads
     phase.node_acceleration[i] = (phase.node_velocity[i] - phase.node_acceleration[i]) / dt;
 }
 
+// The nodal arrays a point takes its velocity and acceleration from.
+template <class Vec>
+struct NodalField {
+  const Vec* velocity;
+  const Vec* acceleration;
+};
+
 // Step 3: FLIP keeps the point's own velocity plus the grid's acceleration (little numerical
 // dissipation), PIC takes the grid's velocity (stable, dissipative); the phase's damping sets
-// the blend. The point moves with the grid velocity.
-template <int dim, class Points, class Sums>
-void nodes_to_points(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, double dt,
-                     int threads) {
+// the blend. The point moves with the grid velocity. `field_of(p)` names the nodal field
+// point p reads (the water has two at the nodes it shares with a soil, two_phase.cpp).
+template <int dim, class Points, class Sums, class FieldOf>
+void nodes_to_points(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, double dt, int threads,
+                     FieldOf field_of) {
   using Vec = Eigen::Matrix<double, dim, 1>;
   Points& points = phase.points;
   const std::size_t n_points = points.size();
@@ -187,15 +209,25 @@ void nodes_to_points(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, dou
   for (std::size_t p = 0; p < n_points; ++p) {
     const auto& nodes = mesh.cell_nodes[points.cell[p]];
     const auto& n = phase.shape[p];
+    const NodalField<Vec> field = field_of(p);
     Vec acceleration = Vec::Zero(), velocity = Vec::Zero();
     for (int i = 0; i <= dim; ++i) {
-      acceleration += n(i) * phase.node_acceleration[nodes[i]];
-      velocity += n(i) * phase.node_velocity[nodes[i]];
+      acceleration += n(i) * field.acceleration[nodes[i]];
+      velocity += n(i) * field.velocity[nodes[i]];
     }
     points.velocity[p] = flip * (points.velocity[p] + dt * acceleration) + (1 - flip) * velocity;
     points.position[p] += dt * velocity;
     if constexpr (requires { points.displacement; }) points.displacement[p] += dt * velocity;
   }
+}
+
+// Step 3 for a phase with one nodal field.
+template <int dim, class Points, class Sums>
+void nodes_to_points(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, double dt,
+                     int threads) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  const NodalField<Vec> own{phase.node_velocity.data(), phase.node_acceleration.data()};
+  nodes_to_points(phase, mesh, dt, threads, [own](std::size_t) { return own; });
 }
 
 // Step 4 (MUSL): the nodal momentum of the updated point velocities, and the nodal velocity

@@ -120,7 +120,8 @@ class Simulation {
   const LiquidPoints<dim>& liquid() const { return water_.points; }
   LiquidPoints<dim>& liquid() { return water_.points; }
   const std::vector<double>& node_liquid_mass() const { return water_.nodal.sums().mass; }
-  const std::vector<Vec>& node_liquid_velocity() const { return water_.node_velocity; }
+  // The water's velocity at the nodes: the mass-weighted mean of the free and the pore water.
+  const std::vector<Vec>& node_liquid_velocity() const { return mean_water_velocity_; }
   const std::vector<double>& node_porosity() const { return node_porosity_; }
   const std::vector<double>& node_pressure() const { return node_pressure_; }
   // Porosity of solid point p: 1 - m / (rho_s V), the Lagrangian form of eq. (5).
@@ -153,11 +154,13 @@ class Simulation {
     std::vector<double> soil_volume;        // sum N V of the solid points (grains and pores)
     std::vector<double> drag;               // sum N V C, C the drag coefficient of eq. (23)
     std::vector<Vec> grain_pressure_force;  // sum p V (1 - n) grad N over the grains
+    std::vector<Vec> solid_mass_gradient;   // sum m grad N: points into the soil at its surface
     void assign(std::size_t n) {
       solid_volume.assign(n, 0.0);
       soil_volume.assign(n, 0.0);
       drag.assign(n, 0.0);
       grain_pressure_force.assign(n, Vec::Zero());
+      solid_mass_gradient.assign(n, Vec::Zero());
     }
   };
   // Volume-weighted nodal sums of the volumetric strain increment.
@@ -185,11 +188,14 @@ class Simulation {
   void update_stress_and_relocate(double dt);
   // Two-phase parts (two_phase.cpp).
   void setup_liquid();
-  void liquid_to_nodes(Transfer what);
+  void liquid_to_nodes();
   void two_phase_nodal_update(double dt, double damping);
   Vec wall_pore_pressure_push(int node, double dt) const;
   // The water's share of the nodal pore-pressure force (eqs. 15, 16; two_phase.cpp).
   double pore_pressure_water_share(std::size_t node) const;
+  // Where free and pore water meet: common normal velocity, drag, free tangential slip.
+  void couple_across_soil_surface(std::size_t node, double a, double ms, Vec& vs, double mf,
+                                  Vec& vf, double mp, Vec& vp) const;
   void remap_liquid_momentum();
   void update_liquid_and_relocate(double dt);
   // Pressure-projection stabilisation (pressure_projection.cpp); returns CG iterations.
@@ -224,6 +230,14 @@ class Simulation {
   detail::NodalScatter<CouplingSums> coupling_;
   std::vector<double> node_porosity_;
   std::vector<double> node_pressure_;  // volume-weighted nodal liquid pressure
+  // Two velocity fields of the water at the nodes (two_phase.cpp): the free water's is
+  // water_.node_velocity (and _acceleration); the pore water's, the water of the liquid
+  // points whose cell holds solid points, is below. Only the pore water feels the drag.
+  std::vector<char> cell_has_soil_;   // per cell: it holds solid points
+  std::vector<char> liquid_in_soil_;  // per liquid point: it is pore water
+  std::vector<Vec> pore_water_velocity_, pore_water_acceleration_;
+  std::vector<Vec> mean_water_velocity_;  // mass-weighted mean of the two (eq. 8's flux)
+  double smallest_cell_height_ = 0;       // of the mesh (a length scale for the surface)
   // Per contact-wall node, dt (1 - n) W / m_s: the velocity the wall's reaction to the grains'
   // share of the pore pressure gives them (W: the wall part of the nodal pore-pressure force).
   std::vector<Vec> node_wall_pore_pressure_push_;
