@@ -74,7 +74,7 @@ double drag_coefficient(double n, double grain_diameter, double viscosity, doubl
   n = std::clamp(n, kMinimumPorosity, 1.0 - 1e-9);
   const double kappa = n * n * n * grain_diameter * grain_diameter / (150.0 * (1 - n) * (1 - n));
   return n * n * viscosity / kappa +
-         1.75 * std::pow(n, 1.5) * liquid_density * relative_speed / std::sqrt(150.0 * kappa);
+         1.75 * n * std::sqrt(n) * liquid_density * relative_speed / std::sqrt(150.0 * kappa);
 }
 }  // namespace
 
@@ -203,14 +203,7 @@ void Simulation<dim>::liquid_to_nodes() {
           b.water_volume_pressure[nodes[i]] += n(i) * pressure_volume;
         }
       },
-      [&](LiquidSums<dim>& b, std::size_t q, int i, double mass, const Vec& momentum,
-          const Vec& force) {
-        if (!liquid_in_soil_[q]) return;
-        const int node = mesh_.cell_nodes[liquid.cell[q]][i];
-        b.pore_mass[node] += mass;
-        b.pore_momentum[node] += momentum;
-        b.pore_force[node] += force;
-      });
+      liquid_in_soil_.data());
 
   // Pass 3: the pore pressure on the grain volume of the solid points, with the pressure
   // interpolated from its nodal value: the water's volume-weighted pressure spread over the

@@ -14,7 +14,6 @@
 #include <cmath>
 #include <cstddef>
 #include <tuple>
-#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -116,14 +115,14 @@ enum class Transfer { kMassMomentumForce, kMomentum };
 
 // Step 1: mass, momentum, weight and internal force -V sigma . grad N (the weak form of
 // div sigma, eq. 11 for the solid's effective stress; the viscous stress of eq. 17 for the
-// water). `extra_terms(sums, k, nodes, shape, grad)` adds what only one phase puts on the
-// nodes; `extra(sums, k, i, mass, momentum, force)` sees point k's share of the three sums at
-// its cell's i-th node (the liquid sums the pore water's share apart).
-template <int dim, class Points, class Sums, class ExtraTerms, class Extra = decltype(nullptr)>
+// water). `extra(sums, k, nodes, shape, grad)` adds what only one phase puts on the nodes.
+// `pore_water` (liquid sums only; may be null): the points flagged in it also add their
+// mass, momentum and force to the sums' pore_ arrays (two_phase.cpp), the same bits.
+template <int dim, class Points, class Sums, class Extra>
 void scatter_to_nodes(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh,
                       const Eigen::Matrix<double, dim, 1>& gravity,
-                      const std::vector<Voigt6>& stress, Transfer what, ExtraTerms extra_terms,
-                      Extra extra = nullptr) {
+                      const std::vector<Voigt6>& stress, Transfer what, Extra extra,
+                      const char* pore_water = nullptr) {
   using Vec = Eigen::Matrix<double, dim, 1>;
   Points& points = phase.points;
   const std::size_t n_points = points.size();
@@ -151,14 +150,19 @@ void scatter_to_nodes(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh,
         const Voigt6& sigma = stress[p];
         for (int i = 0; i <= dim; ++i) {
           const int node = nodes[i];
-          const Vec force = n(i) * weight - v * stress_dot(sigma, grad[i]);
           b.mass[node] += n(i) * m;
           b.momentum[node] += n(i) * momentum;
-          b.force[node] += force;
-          if constexpr (!std::is_null_pointer_v<Extra>)
-            extra(b, p, i, n(i) * m, n(i) * momentum, force);
+          b.force[node] += n(i) * weight - v * stress_dot(sigma, grad[i]);
         }
-        extra_terms(b, p, nodes, n, grad);
+        if constexpr (requires { b.pore_mass; })
+          if (pore_water && pore_water[p])
+            for (int i = 0; i <= dim; ++i) {
+              const int node = nodes[i];
+              b.pore_mass[node] += n(i) * m;
+              b.pore_momentum[node] += n(i) * momentum;
+              b.pore_force[node] += n(i) * weight - v * stress_dot(sigma, grad[i]);
+            }
+        extra(b, p, nodes, n, grad);
       });
 }
 
