@@ -745,6 +745,46 @@ TEST(TwoPhase, StillWaterIn3DStaysStill) {
   EXPECT_LT(v, 0.01 * std::sqrt(9.81 * 0.2));
 }
 
+TEST(TwoPhase, SaturatedBedUnderWaterIn3DStaysAtRest) {
+  // The two water fields meet at the bed's surface; their coupling (couple_across_soil_surface)
+  // is a dimension template too. A 3D box of the 2D bed's set-up, the sand (D = 2 mm) 0.1 m
+  // thick under 0.1 m of free water, hydrostatic pore pressure and buoyant K0 stress.
+  // Tolerances as for the 2D bed: largest speed after 0.2 s below 5 mm/s; the mean pore
+  // pressure within 1 % of hydrostatic (the 2D bed's mean error is 0.5 %) was the target and
+  // is NOT met: 1.0170 of hydrostatic, the same to 5 digits with the water as one field (all
+  // points counted as pore water, December 2026), so it is this coarse bed's own error (two
+  // cells across, the bottom row's one-sided nodal pressures), not the fields' coupling. Held
+  // as a regression bound at 2 %.
+  BoxScene<3> s;
+  s.domain_size = {0.3, 0.3, 0.1};
+  s.cells = {6, 6, 2};
+  s.block_min = Eigen::Vector3d::Zero();
+  s.block_max = {0.3, 0.1, 0.1};
+  s.material = soil(0.002);
+  s.gravity = {0.0, -9.81, 0.0};
+  s.k0 = 0.5;
+  s.with_water = true;
+  s.water = paper_water();
+  s.water_min = Eigen::Vector3d::Zero();
+  s.water_max = {0.3, 0.2, 0.1};
+  for (const char* side : {"x-", "x+", "y-", "z-", "z+"})
+    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
+  Simulation<3> sim = make_box_simulation<3>(s);
+  Stage stage = dynamic_stage(0.2);
+  stage.boundaries = {"x-", "x+", "y-", "z-", "z+"};
+  sim.run_stage(stage, nullptr);
+  const auto& q = sim.liquid();
+  double pressure = 0, hydrostatic = 0, speed = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    pressure += q.pressure[i];
+    hydrostatic += 1000.0 * 9.81 * (0.2 - q.position[i](1));
+    speed = std::max(speed, q.velocity[i].norm());
+  }
+  for (const auto& v : sim.points().velocity) speed = std::max(speed, v.norm());
+  EXPECT_NEAR(pressure / hydrostatic, 1.0, 0.02);
+  EXPECT_LT(speed, 0.005);
+}
+
 // A square block of saturated fine sand, 0.1 m a side, released from rest in the middle of a
 // 1 m x 1 m tank of still water, 0.35 m under the surface (roller walls and bottom). Fine
 // grains (D = 0.1 mm, consolidation time far beyond the run) lock the grains and the pore
