@@ -269,6 +269,27 @@ TEST(TwoPhase, SaturatedBedUnderWaterStaysAtRest) {
   EXPECT_LT(v, 0.005);
 }
 
+// A column of fine sand (D = 0.1 mm) 0.1 m deep, 0.5 m wide, between roller walls on a roller
+// bed (sides x-, x+, y-), with water in its pores up to y = water_top and nothing above it;
+// zero stress unless the caller sets k0 or the stresses.
+BoxScene<2> fine_sand_column(double water_top) {
+  BoxScene<2> s;
+  s.domain_size = {0.5, 0.2};
+  s.cells = {20, 8};
+  s.block_min = {0.0, 0.0};
+  s.block_max = {0.5, 0.1};
+  s.material = soil(1e-4);
+  s.material.youngs_modulus = 5e7;
+  s.gravity = {0.0, -9.81};
+  s.with_water = true;
+  s.water = paper_water();
+  s.water_min = s.block_min;
+  s.water_max = {0.5, water_top};
+  for (const char* side : {"x-", "x+", "y-"})
+    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
+  return s;
+}
+
 TEST(TwoPhase, WaterTableAtTheSoilSurfaceStaysHydrostatic) {
   // A saturated soil column 0.1 m deep with its water table at its top and nothing above it
   // (the surface of a saturated slide above the water), between roller walls: a 1D column.
@@ -282,21 +303,8 @@ TEST(TwoPhase, WaterTableAtTheSoilSurfaceStaysHydrostatic) {
   // times the effective stress (the top row of nodes counted its empty half as pore space and
   // gave its water 0.7 / 0.4 of the force that holds it up); split by the water's share of
   // the wet mixture (two_phase.cpp, pore_pressure_water_share), 1.008 and 1.000.
-  BoxScene<2> s;
-  s.domain_size = {0.5, 0.2};
-  s.cells = {20, 8};
-  s.block_min = {0.0, 0.0};
-  s.block_max = {0.5, 0.1};
-  s.material = soil(1e-4);
-  s.material.youngs_modulus = 5e7;
-  s.gravity = {0.0, -9.81};
+  BoxScene<2> s = fine_sand_column(0.1);
   s.k0 = 0.5;
-  s.with_water = true;
-  s.water = paper_water();
-  s.water_min = s.block_min;
-  s.water_max = s.block_max;
-  for (const char* side : {"x-", "x+", "y-"})
-    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
   Simulation<2> sim = make_box_simulation<2>(s);
   sim.run_stage(dynamic_stage(0.3), nullptr);
   double pressure = 0, hydrostatic = 0;
@@ -324,20 +332,7 @@ TEST(TwoPhase, WaterTableInsideASoilStaysPut) {
   // 3 %, catch what a share that counts the dry grains above the table as wet did: the
   // water's share at the table fell from 0.4 to 0.25, and the pressure rose to 1.45 of
   // hydrostatic (effective stress 0.92).
-  BoxScene<2> s;
-  s.domain_size = {0.5, 0.2};
-  s.cells = {20, 8};
-  s.block_min = {0.0, 0.0};
-  s.block_max = {0.5, 0.1};
-  s.material = soil(1e-4);
-  s.material.youngs_modulus = 5e7;
-  s.gravity = {0.0, -9.81};
-  s.with_water = true;
-  s.water = paper_water();
-  s.water_min = s.block_min;
-  s.water_max = {0.5, 0.05};
-  for (const char* side : {"x-", "x+", "y-"})
-    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
+  const BoxScene<2> s = fine_sand_column(0.05);
   const double table = 0.05, dry_density = 0.6 * 2650.0;
   auto effective_stress = [&](double y) {
     return -9.81 * (dry_density * (0.1 - std::max(y, table)) +
@@ -712,16 +707,15 @@ namespace {
 
 using namespace lituya::solver;
 
-TEST(TwoPhase, StillWaterIn3DStaysStill) {
-  // The two-phase kernels are dimension templates: a 3D tank (tetrahedra, 4 points per cell)
-  // must keep still water still as the 2D one does. Reference p = rho_w g (H - y), H = 0.2 m;
-  // tolerances as in 2D (pressure RMS 2 % of rho_w g H; largest speed after 0.2 s below 1 %
-  // of sqrt(g H)).
+// A 3D tank 0.3 x 0.3 x 0.1 m (6 x 6 x 2 cubes of tetrahedra) with still water 0.2 m deep over
+// a sand bed (D = 2 mm) `soil_top` thick (none for 0), roller walls and bottom.
+BoxScene<3> tank_3d(double soil_top) {
   BoxScene<3> s;
   s.domain_size = {0.3, 0.3, 0.1};
   s.cells = {6, 6, 2};
-  s.block_min = Eigen::Vector3d::Constant(2.0);  // no soil
-  s.block_max = Eigen::Vector3d::Constant(-1.0);
+  s.block_min = Eigen::Vector3d::Zero();
+  s.block_max = soil_top > 0 ? Eigen::Vector3d(0.3, soil_top, 0.1) : Eigen::Vector3d::Zero();
+  if (!(soil_top > 0)) s.block_min = Eigen::Vector3d::Constant(2.0);  // no cell centroid lies in
   s.material = soil(0.002);
   s.gravity = {0.0, -9.81, 0.0};
   s.with_water = true;
@@ -730,10 +724,22 @@ TEST(TwoPhase, StillWaterIn3DStaysStill) {
   s.water_max = {0.3, 0.2, 0.1};
   for (const char* side : {"x-", "x+", "y-", "z-", "z+"})
     s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
-  Simulation<3> sim = make_box_simulation<3>(s);
-  Stage stage = dynamic_stage(0.2);
+  return s;
+}
+
+void run_tank_3d(Simulation<3>& sim, double duration) {
+  Stage stage = dynamic_stage(duration);
   stage.boundaries = {"x-", "x+", "y-", "z-", "z+"};
   sim.run_stage(stage, nullptr);
+}
+
+TEST(TwoPhase, StillWaterIn3DStaysStill) {
+  // The two-phase kernels are dimension templates: a 3D tank (tetrahedra, 4 points per cell)
+  // must keep still water still as the 2D one does. Reference p = rho_w g (H - y), H = 0.2 m;
+  // tolerances as in 2D (pressure RMS 2 % of rho_w g H; largest speed after 0.2 s below 1 %
+  // of sqrt(g H)).
+  Simulation<3> sim = make_box_simulation<3>(tank_3d(0.0));
+  run_tank_3d(sim, 0.2);
   const auto& q = sim.liquid();
   ASSERT_GT(q.size(), 100u);
   double sum = 0;
@@ -757,24 +763,10 @@ TEST(TwoPhase, SaturatedBedUnderWaterIn3DStaysAtRest) {
   // points counted as pore water, December 2026), so it is this coarse bed's own error (two
   // cells across, the bottom row's one-sided nodal pressures), not the fields' coupling. Held
   // as a regression bound at 2 %.
-  BoxScene<3> s;
-  s.domain_size = {0.3, 0.3, 0.1};
-  s.cells = {6, 6, 2};
-  s.block_min = Eigen::Vector3d::Zero();
-  s.block_max = {0.3, 0.1, 0.1};
-  s.material = soil(0.002);
-  s.gravity = {0.0, -9.81, 0.0};
+  BoxScene<3> s = tank_3d(0.1);
   s.k0 = 0.5;
-  s.with_water = true;
-  s.water = paper_water();
-  s.water_min = Eigen::Vector3d::Zero();
-  s.water_max = {0.3, 0.2, 0.1};
-  for (const char* side : {"x-", "x+", "y-", "z-", "z+"})
-    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
   Simulation<3> sim = make_box_simulation<3>(s);
-  Stage stage = dynamic_stage(0.2);
-  stage.boundaries = {"x-", "x+", "y-", "z-", "z+"};
-  sim.run_stage(stage, nullptr);
+  run_tank_3d(sim, 0.2);
   const auto& q = sim.liquid();
   double pressure = 0, hydrostatic = 0, speed = 0;
   for (std::size_t i = 0; i < q.size(); ++i) {
