@@ -4,12 +4,16 @@
 // A column of the flume (a gauge's window, a profile bin) is read as a water fraction that
 // varies with height: each liquid point stands for a square (a cube in 3D) of its spacing,
 // filled with water at volume / spacing^d (1 for free water, the porosity for pore water),
-// and counts with the share of its width that lies in the column. The surface is the level
-// from which the column is (three quarters) full downwards, raised by the water that stands
+// and counts with the share of its width that lies in the column. The surface is the top of
+// the water body's highest (three quarters) full level, the body being the column from the
+// bottom up to its first gap (below a quarter full), raised by all the water that stands
 // above that level spread over the column. So a point riding a little above its neighbours
-// lifts the surface by its own share of the column, not by its full height, and a drop of
-// spray adds its volume, not its elevation: the highest point's top (the former reading)
-// jumped with single points and made crest records spiky on fine meshes.
+// lifts the surface by its own share of the column, not by its full height, and a drop or a
+// sheet of spray adds its volume, not its elevation: the highest point's top (the reading
+// until December 2026) jumped with single points and made crest records spiky on fine
+// meshes, and the highest full level of the whole column (until the eighth session of
+// December 2026) took a row of points thrown ahead of a crest over a gap for the surface
+// (Case B at 0.01 m cells).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -31,6 +35,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // (of 1 for free water). Below a half the reading would take a single point standing on a
 // full row two points wide for water; at 1 any gap between disordered points would count.
 constexpr double kFullShare = 0.75;
+// Below this share of its fullest level the column is empty there: water above such a gap is
+// not part of the body below it (a sheet of spray flying over the surface), however full.
+constexpr double kGapShare = 0.25;
 
 // The part of one point that lies in a column: its vertical extent and the fraction of the
 // column's cross-section it fills there.
@@ -79,21 +86,21 @@ class Column {
   // The surface elevation (absolute), see the file comment.
   double surface() {
     if (footprints_.empty()) return highest_centre_;
-    // Walking down from the top: +fraction at a footprint's top, -fraction at its bottom.
+    // Walking up from the bottom: +fraction at a footprint's bottom, -fraction at its top.
     events_.clear();
     for (const Footprint& f : footprints_) {
-      events_.push_back({f.top, f.fraction});
-      events_.push_back({f.bottom, -f.fraction});
+      events_.push_back({f.bottom, f.fraction});
+      events_.push_back({f.top, -f.fraction});
     }
     std::sort(events_.begin(), events_.end(),
-              [](const Event& a, const Event& b) { return a.y > b.y; });
+              [](const Event& a, const Event& b) { return a.y < b.y; });
     // Levels: events closer than a billionth of the column's width are one level, so that a
     // point's bottom and the top of the point below it (equal but for rounding) do not make
     // the column look doubly full, or empty, in between.
     const double same_level = 1e-9 * (right_ - left_);
     auto next_level = [&](size_t& k, double& fraction) {
       const double y = events_[k].y;
-      for (; k < events_.size() && events_[k].y > y - same_level; ++k)
+      for (; k < events_.size() && events_[k].y < y + same_level; ++k)
         fraction += events_[k].change;
       return y;
     };
@@ -105,15 +112,42 @@ class Column {
       fullest = std::max(fullest, fraction);
     }
     fullest = std::min(fullest, 1.0);
-    double above = 0;  // water standing above the current level, as a height of full column
+    // Up through the water body, the stretch of the column from its first full level up to
+    // where it empties (below a quarter full over half a point's height or more: a gap, not
+    // the disorder of points within the water), to the top of the body's last full level; what stands above that level, the
+    // body's partly filled top and any spray over a gap, is spread over the column.
+    // A gap must be at least half a point high: between two rows of a sheared lattice the
+    // column can be empty over a sliver.
+    double spacing = 0;
+    for (const Footprint& f : footprints_) spacing += f.top - f.bottom;
+    const double min_gap = 0.5 * spacing / static_cast<double>(footprints_.size());
+    const double full = kFullShare * fullest * (1 - 1e-12);
+    const double gap = kGapShare * fullest;
+    bool in_body = false, was_full = false;
+    double top = kNaN, gap_start = kNaN;
     fraction = 0;
     for (size_t k = 0; k < events_.size();) {
       const double y = next_level(k, fraction);
-      if (fraction >= kFullShare * fullest * (1 - 1e-12))
-        return std::max(y + above / fullest, highest_centre_);
-      if (k < events_.size()) above += fraction * (y - events_[k].y);
+      if (!std::isnan(gap_start) && y - gap_start >= min_gap) break;  // the body ended there
+      if (!in_body && fraction >= full) in_body = true;
+      if (!in_body) continue;
+      const bool is_full = fraction >= full;
+      if (was_full && !is_full) top = y;
+      was_full = is_full;
+      if (fraction < gap) {
+        if (std::isnan(gap_start)) gap_start = y;
+      } else {
+        gap_start = kNaN;
+      }
     }
-    return highest_centre_;  // not reached: the fullest level is at least kFullShare full
+    if (std::isnan(top)) return highest_centre_;  // not reached: the body empties somewhere
+    double above = 0;  // the water over the top, as a height of full column
+    fraction = 0;
+    for (size_t k = 0; k < events_.size();) {
+      const double y = next_level(k, fraction);
+      if (k < events_.size() && y >= top - same_level) above += fraction * (events_[k].y - y);
+    }
+    return std::max(top + above / fullest, highest_centre_);
   }
 
  private:
