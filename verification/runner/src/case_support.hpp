@@ -34,6 +34,7 @@ struct CaseResult {
   // A documented failure (verification/<case>/known-failure.md): reported as FAIL with the
   // explanation, but it does not fail the run, so CI stays meaningful for the other cases.
   bool known_failure = false;
+  bool known_failure_full_only = false;  // only known-failure-full.md: the full variant fails
   // The case folders the case wrote (relative to its work folder) and the hash of each one's
   // case files (solver::case_files_hash), so a report can be matched to its inputs.
   std::vector<std::pair<std::string, std::string>> case_hashes;

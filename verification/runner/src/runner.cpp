@@ -111,7 +111,8 @@ void write_report(const std::filesystem::path& folder, const std::vector<CaseRes
       md << "\n## " << r.title << "\n\nFolder `verification/" << r.name << "`, " << r.variant
          << " variant: **" << status(r) << "**\n\n";
       if (r.known_failure && !r.passed())
-        md << "Known failure, explained in `verification/" << r.name << "/known-failure.md`.\n\n";
+        md << "Known failure, explained in `verification/" << r.name << "/known-failure"
+           << (r.variant == "full" && r.known_failure_full_only ? "-full" : "") << ".md`.\n\n";
       if (!r.error.empty()) md << "Could not run: `" << r.error << "`\n\n";
       for (const auto& [case_folder, hash] : r.case_hashes)
         md << "Case files of `" << r.name << "/" << case_folder << "`: `" << hash << "`\n\n";
@@ -206,9 +207,11 @@ bool run_verification(const RunnerOptions& options) {
                         options.report_folder, options.full, options.threads};
     std::filesystem::create_directories(context.work);
     // known-failure-full.md: a failure of the full variant only (finer meshes than CI runs).
-    result.known_failure =
-        std::filesystem::exists(context.source / "known-failure.md") ||
-        (options.full && std::filesystem::exists(context.source / "known-failure-full.md"));
+    result.known_failure_full_only =
+        !std::filesystem::exists(context.source / "known-failure.md") &&
+        std::filesystem::exists(context.source / "known-failure-full.md");
+    result.known_failure = std::filesystem::exists(context.source / "known-failure.md") ||
+                           (options.full && result.known_failure_full_only);
     progress << counter << entry.name << ": started (" << result.variant
              << " variant: " << entry.title << ")" << std::endl;
     const auto start = std::chrono::steady_clock::now();
