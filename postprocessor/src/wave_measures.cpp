@@ -114,10 +114,10 @@ class Column {
     fullest = std::min(fullest, 1.0);
     // Up through the water body, the stretch of the column from its first full level up to
     // where it empties (below a quarter full over half a point's height or more: a gap, not
-    // the disorder of points within the water), to the top of the body's last full level; what stands above that level, the
-    // body's partly filled top and any spray over a gap, is spread over the column.
-    // A gap must be at least half a point high: between two rows of a sheared lattice the
-    // column can be empty over a sliver.
+    // the disorder of points within the water), to the top of the body's last full level; what
+    // stands above that level, the body's partly filled top and any spray over a gap, is spread
+    // over the column. A gap must be at least half a point high: between two rows of a sheared
+    // lattice the column can be empty over a sliver.
     double spacing = 0;
     for (const Footprint& f : footprints_) spacing += f.top - f.bottom;
     const double min_gap = 0.5 * spacing / static_cast<double>(footprints_.size());

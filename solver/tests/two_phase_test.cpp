@@ -713,9 +713,13 @@ BoxScene<3> tank_3d(double soil_top) {
   BoxScene<3> s;
   s.domain_size = {0.3, 0.3, 0.1};
   s.cells = {6, 6, 2};
-  s.block_min = Eigen::Vector3d::Zero();
-  s.block_max = soil_top > 0 ? Eigen::Vector3d(0.3, soil_top, 0.1) : Eigen::Vector3d::Zero();
-  if (!(soil_top > 0)) s.block_min = Eigen::Vector3d::Constant(2.0);  // no cell centroid lies in
+  if (soil_top > 0) {
+    s.block_min = Eigen::Vector3d::Zero();
+    s.block_max = {0.3, soil_top, 0.1};
+  } else {  // an empty block (min above max): no soil
+    s.block_min = Eigen::Vector3d::Constant(2.0);
+    s.block_max = Eigen::Vector3d::Constant(-1.0);
+  }
   s.material = soil(0.002);
   s.gravity = {0.0, -9.81, 0.0};
   s.with_water = true;

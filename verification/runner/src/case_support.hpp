@@ -33,8 +33,10 @@ struct CaseResult {
   double wall_time = 0;                      // s
   // A documented failure (verification/<case>/known-failure.md): reported as FAIL with the
   // explanation, but it does not fail the run, so CI stays meaningful for the other cases.
-  bool known_failure = false;
-  bool known_failure_full_only = false;  // only known-failure-full.md: the full variant fails
+  // The file that explains it (known-failure.md, or known-failure-full.md for a failure of the
+  // full variant only); empty: not a known failure.
+  std::string known_failure_note;
+  bool known_failure() const { return !known_failure_note.empty(); }
   // The case folders the case wrote (relative to its work folder) and the hash of each one's
   // case files (solver::case_files_hash), so a report can be matched to its inputs.
   std::vector<std::pair<std::string, std::string>> case_hashes;

@@ -11,6 +11,7 @@
 //   relocate             step 5: the point's new cell, or the fault that stops the run
 // What couples the phases (porosity, drag, the pore-pressure split, eq. 8) is in
 // two_phase.cpp. Internal to the solver library; the public interface is simulation.hpp.
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <tuple>
@@ -148,11 +149,13 @@ void scatter_to_nodes(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh,
         const Vec momentum = m * points.velocity[p];
         const Vec weight = m * gravity;
         const Voigt6& sigma = stress[p];
+        std::array<Vec, dim + 1> force;
         for (int i = 0; i <= dim; ++i) {
           const int node = nodes[i];
+          force[i] = n(i) * weight - v * stress_dot(sigma, grad[i]);
           b.mass[node] += n(i) * m;
           b.momentum[node] += n(i) * momentum;
-          b.force[node] += n(i) * weight - v * stress_dot(sigma, grad[i]);
+          b.force[node] += force[i];
         }
         if constexpr (requires { b.pore_mass; })
           if (pore_water && pore_water[p])
@@ -160,7 +163,7 @@ void scatter_to_nodes(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh,
               const int node = nodes[i];
               b.pore_mass[node] += n(i) * m;
               b.pore_momentum[node] += n(i) * momentum;
-              b.pore_force[node] += n(i) * weight - v * stress_dot(sigma, grad[i]);
+              b.pore_force[node] += force[i];
             }
         extra(b, p, nodes, n, grad);
       });
