@@ -182,12 +182,20 @@ SolverSettings read_solver_settings(const TomlTable& t) {
   }
   s.max_velocity = t.number_in_or("max_velocity", 1e-9, 1e9, s.max_velocity);
   s.volumetric_smoothing = t.boolean_or("volumetric_smoothing", s.volumetric_smoothing);
-  const long long interval =
-      t.integer_or("pressure_projection_interval", s.pressure_projection_interval);
-  if (interval < 0 || interval > 1000000)
-    t.fail("'pressure_projection_interval' must be a number of steps in [0, 1000000] (0 = off)",
-           "pressure_projection_interval");
-  s.pressure_projection_interval = static_cast<int>(interval);
+  if (t.has("pressure_projection_interval") && t.has("pressure_projection_time"))
+    t.fail(
+        "give either 'pressure_projection_interval' (steps) or 'pressure_projection_time' "
+        "(seconds), not both",
+        "pressure_projection_time");
+  if (t.has("pressure_projection_interval")) {
+    const long long interval = t.integer_or("pressure_projection_interval", 0);
+    if (interval < 0 || interval > 1000000)
+      t.fail("'pressure_projection_interval' must be a number of steps in [0, 1000000] (0 = off)",
+             "pressure_projection_interval");
+    s.pressure_projection_interval = static_cast<int>(interval);
+  }
+  if (t.has("pressure_projection_time"))
+    s.pressure_projection_time = t.number_in_or("pressure_projection_time", 1e-12, 1e9, 1.0);
   s.pore_volume_projection = t.boolean_or("pore_volume_projection", s.pore_volume_projection);
   s.liquid_bulk_viscosity =
       t.number_in_or("liquid_bulk_viscosity", 0.0, 1.0, s.liquid_bulk_viscosity);
@@ -390,7 +398,6 @@ toml::table to_toml(const SolverSettings& s) {
 
                 {"max_velocity", s.max_velocity},
                 {"volumetric_smoothing", s.volumetric_smoothing},
-                {"pressure_projection_interval", s.pressure_projection_interval},
                 {"pore_volume_projection", s.pore_volume_projection},
                 {"liquid_bulk_viscosity", s.liquid_bulk_viscosity},
                 {"checkpoint_interval_minutes", s.checkpoint_interval_minutes}};
@@ -398,6 +405,9 @@ toml::table to_toml(const SolverSettings& s) {
   if (s.flip_fraction) t.insert("flip_fraction", *s.flip_fraction);
   if (s.pic_damping_time) t.insert("pic_damping_time", *s.pic_damping_time);
   if (s.liquid_pic_damping_time) t.insert("liquid_pic_damping_time", *s.liquid_pic_damping_time);
+  if (s.pressure_projection_interval)
+    t.insert("pressure_projection_interval", *s.pressure_projection_interval);
+  if (s.pressure_projection_time) t.insert("pressure_projection_time", *s.pressure_projection_time);
   return t;
 }
 

@@ -328,6 +328,8 @@ struct CheckpointAccess {
 
   static void write(BinaryOut& out, const Simulation<dim>& s) {
     out.value(s.next_time_step_);
+    out.value(s.projection_clock_);
+    out.value(static_cast<std::int64_t>(s.projection_count_));
     each_array(s, [&](const std::string& name, const auto& v, std::optional<std::size_t>) {
       out.array(name, v);
     });
@@ -336,6 +338,8 @@ struct CheckpointAccess {
   static void read(BinaryIn& in, Simulation<dim>& s, std::int64_t step_count) {
     s.step_count_ = static_cast<long>(step_count);
     s.next_time_step_ = in.value<double>();
+    s.projection_clock_ = in.value<double>();
+    s.projection_count_ = static_cast<long>(in.value<std::int64_t>());
     each_array(s, [&](const std::string& name, auto& v, std::optional<std::size_t> expected) {
       in.array(name, v, expected);
     });

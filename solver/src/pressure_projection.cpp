@@ -6,7 +6,9 @@
 // nothing in the equations removes it, and in violent flow it grows to a sizeable fraction of
 // rho_w g H (see verification/dam_break).
 //
-// What: every `pressure_projection_interval` steps, the point pressures are replaced by their
+// What: at fixed simulated times (`pressure_projection_time`, by default ten steps of still
+// water at Courant 0.5; or every `pressure_projection_interval` steps when that is given;
+// Simulation::pressure_projection_due), the point pressures are replaced by their
 // L2 projection onto the continuous piecewise-linear functions of the mesh, weighted by the
 // points' water volumes:
 //     find c (nodal values) with  M c = b,   M_ij = sum_q V_q N_i(x_q) N_j(x_q),
@@ -15,7 +17,12 @@
 // This is the idea of the polynomial pressure projection of Dohrmann and Bochev (2004),
 // applied as a periodic filter. Properties that matter here:
 // - it is an orthogonal projection in the V-weighted inner product, so it can only remove
-//   pressure "energy" sum V p^2 / 2K (dissipative, never pumps);
+//   pressure "energy" sum V p^2 / 2K. It is not free of side effects: it also removes the
+//   sub-cell part of the pressure that balances the points' uneven quadrature of the weight,
+//   so each projection kicks slowly moving water (verification/seepage, ninth session) and
+//   damps a travelling wave a little (Case B's X2 crest 11 % lower at 0.01 m cells than with
+//   no projection; user manual 2.6). Hence a period in time, not in steps: in steps, the
+//   Courant number changed how much it damps;
 // - it reproduces any linear field exactly, at the free surface and the walls too (unlike a
 //   lumped nodal average, which is one-sided there), so a hydrostatic tank is untouched;
 // - pressure variation below the mesh scale, which the P1 velocities cannot feel, is removed.

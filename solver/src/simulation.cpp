@@ -22,6 +22,11 @@ namespace {
 
 using namespace detail;
 
+// The default pressure projection period: this many steps of still water at this Courant
+// number (resolve_pressure_projection()).
+constexpr int kDefaultProjectionSteps = 10;
+constexpr double kDefaultProjectionCourant = 0.5;
+
 double wall_seconds() {
   using clock = std::chrono::steady_clock;
   static const auto start = clock::now();
@@ -77,6 +82,44 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
                   description_.points_file, "point");
   if (has_liquid_) setup_liquid();
   next_time_step_ = stable_time_step(1.0);
+  resolve_pressure_projection();
+}
+
+template <int dim>
+void Simulation<dim>::resolve_pressure_projection() {
+  const SolverSettings& settings = description_.solver;
+  std::ostringstream line;
+  line.precision(3);
+  line << "pressure projection: ";
+  if (settings.pressure_projection_interval) {
+    if (*settings.pressure_projection_interval > 0)
+      line << "every " << *settings.pressure_projection_interval << " steps (given)";
+    else
+      line << "off (given)";
+  } else if (settings.pressure_projection_time) {
+    projection_time_ = *settings.pressure_projection_time;
+    line << "every " << projection_time_ << " s (given)";
+  } else {
+    // Ten steps of still water at Courant 0.5, the step count that was the default until
+    // December 2026: the same projections as then wherever the water sets the step, but now
+    // fixed in time, so that the Courant number no longer changes how much they damp (user
+    // manual 2.6). The step of still water is h_min / s, s the water's signal speed at rest
+    // (sound and the viscous limits, as stable_time_step() takes it), in the smallest cell.
+    double h_min = std::numeric_limits<double>::max();
+    for (double h : mesh_.cell_min_height) h_min = std::min(h_min, h);
+    double signal_speed = 0;
+    for (const MaterialModelData& m : materials_)
+      if (m.model == MaterialModel::kWater)
+        signal_speed = std::max(signal_speed, detail::liquid_signal_speed(
+                                                  settings.liquid_bulk_viscosity, m.liquid_density,
+                                                  m.wave_speed, m.viscosity, 0.0, h_min));
+    if (signal_speed > 0) {
+      projection_time_ = kDefaultProjectionSteps * kDefaultProjectionCourant * h_min / signal_speed;
+      line << "every " << projection_time_ << " s (" << kDefaultProjectionSteps
+           << " steps of still water at Courant " << kDefaultProjectionCourant << ")";
+    }
+  }
+  projection_description_ = line.str();
 }
 
 template <int dim>
@@ -321,13 +364,27 @@ void Simulation<dim>::step(double dt, double damping) {
   update_stress_and_relocate(dt);
   if (has_liquid_) {
     update_liquid_and_relocate(dt);
-    const int interval = description_.solver.pressure_projection_interval;
-    if (interval > 0 && (step_count_ + 1) % interval == 0) {
+    if (pressure_projection_due(dt)) {
       project_liquid_pressure();
+      ++projection_count_;
       if (description_.solver.pore_volume_projection) project_pore_water_volume();
     }
   }
   ++step_count_;
+}
+
+template <int dim>
+bool Simulation<dim>::pressure_projection_due(double dt) {
+  if (const auto& interval = description_.solver.pressure_projection_interval)
+    return *interval > 0 && (step_count_ + 1) % *interval == 0;
+  // By simulated time. The period is taken off the clock (not the clock reset), so that steps
+  // that do not divide it keep the mean rate; the relative slack absorbs the rounding of sums
+  // of equal steps (ten steps of exactly a tenth of the period).
+  projection_clock_ += dt;
+  if (projection_clock_ < projection_time_ * (1.0 - 1e-9)) return false;
+  projection_clock_ -= projection_time_;
+  if (projection_clock_ >= projection_time_) projection_clock_ = 0;  // a step longer than it
+  return true;
 }
 
 template <int dim>

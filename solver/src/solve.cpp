@@ -244,6 +244,7 @@ std::vector<StageReport> run(const CaseDescription& description, const SolveOpti
          std::to_string(n_liquid) + " liquid), " + std::to_string(simulation.mesh().cell_count()) +
          " cells, " + std::to_string(options.threads) + " thread(s)");
     note(simulation.transfer_damping().description);
+    if (simulation.has_liquid()) note(simulation.pressure_projection_description());
     if (start.checkpoint) {
       note("Going on from checkpoint " + start.checkpoint->string() + " (" +
            describe(start.header, description.stages) + ")");

@@ -274,6 +274,31 @@ TEST(CaseDescription, GivenDampingTimesAreWrittenBackAlone) {
   EXPECT_FALSE(read_back.liquid_pic_damping_time.has_value());
 }
 
+TEST(CaseDescription, PressureProjectionIsCountedInStepsOrInTimeNotBoth) {
+  // Both given: the error names the line of the time and the key.
+  const std::string msg = error_reading_solver_settings(
+      "[solver]\npressure_projection_interval = 10\npressure_projection_time = 0.001\n");
+  EXPECT_NE(msg.find(":3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("pressure_projection_time"), std::string::npos) << msg;
+  EXPECT_NE(error_reading_solver_settings("[solver]\npressure_projection_time = 0\n"), "accepted");
+  // Neither is written back when neither was given (the default, by time, stays a default);
+  // a given one is written back alone and reads again.
+  SolverSettings s;
+  toml::table root;
+  root.insert("solver", to_toml(s));
+  const SolverSettings none = read_solver_settings(
+      *written_and_read(root, "lituya_projection_none.toml").root().optional_table("solver"));
+  EXPECT_FALSE(none.pressure_projection_interval.has_value());
+  EXPECT_FALSE(none.pressure_projection_time.has_value());
+  s.pressure_projection_time = 0.002;
+  root.insert_or_assign("solver", to_toml(s));
+  const SolverSettings timed = read_solver_settings(
+      *written_and_read(root, "lituya_projection_time.toml").root().optional_table("solver"));
+  ASSERT_TRUE(timed.pressure_projection_time.has_value());
+  EXPECT_DOUBLE_EQ(*timed.pressure_projection_time, 0.002);
+  EXPECT_FALSE(timed.pressure_projection_interval.has_value());
+}
+
 // stages.toml and materials.toml can be edited by hand between `lituya pre` and `lituya
 // solve`: the case loader applies the same checks as the scene reader, so a stage name that
 // cannot make a file name or a non-finite gravity stops at its line, before any output.

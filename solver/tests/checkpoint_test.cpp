@@ -120,10 +120,13 @@ class Checkpoint : public ::testing::Test {
   // simulation reads it and runs the rest; both must end in the same state and write the
   // same outputs after the checkpoint. Output maps the points to the grid as the writer does
   // (it overwrites the nodal velocities the next step's drag reads).
-  void resume_within_stage(bool with_water) {
+  // by_time: the pressure projection at its default period in time, whose clock (the time
+  // since the last projection) is state too.
+  void resume_within_stage(bool with_water, bool by_time = false) {
     const fs::path file = folder_ / "latest.checkpoint";
     const Stage stage = collapse_stage(0.04);
-    const BoxScene<2> scene = collapse_scene(with_water);
+    BoxScene<2> scene = collapse_scene(with_water);
+    if (by_time) scene.solver.pressure_projection_interval.reset();
     Simulation<2> whole = make_box_simulation<2>(scene);
     std::vector<std::pair<double, int>> outputs_whole, outputs_resumed;
     bool taken = false;
@@ -168,6 +171,10 @@ TEST_F(Checkpoint, DryRunResumedWithinAStageIsBitForBitTheSame) {
 
 TEST_F(Checkpoint, RunWithWaterResumedWithinAStageIsBitForBitTheSame) {
   resume_within_stage(true);
+}
+
+TEST_F(Checkpoint, RunWithWaterProjectedByTimeResumedWithinAStageIsBitForBitTheSame) {
+  resume_within_stage(true, true);
 }
 
 TEST_F(Checkpoint, ThreeDimensionalRunResumedWithinAStageIsBitForBitTheSame) {

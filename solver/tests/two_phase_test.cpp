@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
+#include <tuple>
 
 #include "lituya/common/input_error.hpp"
 #include "lituya/solver/box_scene.hpp"
@@ -528,6 +530,38 @@ TEST(TwoPhase, TwoThreadRunsRepeatBitForBit) {
   double moved = 0;
   for (const auto& v : liquid_1.velocity) moved = std::max(moved, v.norm());
   EXPECT_GT(moved, 0.01);  // the water moves: there was something to differ
+}
+
+// The pressure projection damps the water a little each time it runs (user manual 2.6), so it
+// runs at fixed simulated times: the Courant number must change the steps, not the number of
+// projections. By default every ten steps of still water at Courant 0.5 (the step count that
+// was the default before), which a still tank at Courant 0.5 takes exactly.
+TEST(PressureProjection, RunsAtFixedTimesWhateverTheCourantNumber) {
+  constexpr double kDuration = 0.05;
+  auto run = [&](double courant, std::optional<int> interval) {
+    BoxScene<2> s = tank(0.3);
+    s.solver.pressure_projection_interval = interval;
+    Simulation<2> sim = make_box_simulation<2>(s);
+    sim.run_stage(dynamic_stage(kDuration, courant), nullptr);
+    return std::make_tuple(sim.step_count(), sim.pressure_projection_count(),
+                           sim.pressure_projection_time());
+  };
+  const auto [steps_1, count_1, period] = run(0.5, std::nullopt);
+  const auto [steps_2, count_2, period_2] = run(0.25, std::nullopt);
+  ASSERT_GT(period, 0.0);
+  EXPECT_EQ(period_2, period);
+  // The still tank's step is the still-water step: ten steps a projection, to one projection
+  // (the stage's last step is cut short to land on its end).
+  EXPECT_NEAR(static_cast<double>(steps_1) / 10.0, static_cast<double>(count_1), 1.0);
+  EXPECT_NEAR(kDuration / period, static_cast<double>(count_1), 1.0);
+  // Half the Courant number: twice the steps, the same projections.
+  EXPECT_NEAR(static_cast<double>(steps_2), 2.0 * static_cast<double>(steps_1), 2.0);
+  EXPECT_NEAR(static_cast<double>(count_2), static_cast<double>(count_1), 1.0);
+  // Counted in steps (given), they double with the steps.
+  const auto [steps_3, count_3, period_3] = run(0.25, 10);
+  EXPECT_EQ(period_3, 0.0);
+  EXPECT_EQ(count_3, steps_3 / 10);
+  EXPECT_GT(count_3, count_1 + count_1 / 2);
 }
 
 }  // namespace

@@ -97,10 +97,15 @@ struct SolverSettings {
   // FLIP transfer it feeds velocity noise (a sliding block then gains speed it should not,
   // see verification/sliding_block), so it is an experimental option for now.
   bool volumetric_smoothing = false;
-  // Every this many steps, the liquid point pressures are replaced by their L2 projection onto
-  // continuous linear fields (pressure_projection.cpp): removes the cell-to-cell pressure
-  // noise of linear cells, keeps linear (hydrostatic) fields exactly. 0 = never.
-  int pressure_projection_interval = 10;
+  // How often the liquid point pressures are replaced by their L2 projection onto continuous
+  // linear fields (pressure_projection.cpp): removes the cell-to-cell pressure noise of linear
+  // cells, keeps linear (hydrostatic) fields exactly. Every pressure_projection_interval steps
+  // when given (0 = never); otherwise every pressure_projection_time seconds of simulated time,
+  // by default 10 still-water steps at Courant 0.5 (simulation.cpp,
+  // default_pressure_projection_time). By time, because each projection damps the water a
+  // little: counted in steps, halving the Courant number doubled it (user manual 2.6).
+  std::optional<int> pressure_projection_interval;
+  std::optional<double> pressure_projection_time;
   // At the same steps, liquid points that over-fill the pores of a soil are moved out until
   // each soil node holds no more water than its pore volume (pore_volume_projection.cpp;
   // scientific manual 10.4). A pore can be partly empty (unsaturated), never over-full.

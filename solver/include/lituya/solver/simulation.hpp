@@ -111,6 +111,12 @@ class Simulation {
   double last_time_step() const { return last_dt_; }
   const Mesh<dim>& mesh() const { return mesh_; }
   const TransferDamping& transfer_damping() const { return damping_; }
+  // s between two pressure projections when they are counted in time (0: by steps or none),
+  // and a line for the log saying which.
+  double pressure_projection_time() const { return projection_time_; }
+  const std::string& pressure_projection_description() const { return projection_description_; }
+  // Pressure projections run so far (pressure_projection.cpp).
+  long pressure_projection_count() const { return projection_count_; }
   const MaterialPoints<dim>& points() const { return solid_.points; }
   MaterialPoints<dim>& points() { return solid_.points; }
   const CaseDescription& description() const { return description_; }
@@ -214,6 +220,14 @@ class Simulation {
   std::vector<NodalConstraint<dim>> constraints_;
   std::vector<const NodalConstraint<dim>*> active_tractions_;
   double stage_time_ = 0;  // time since the start of the running stage (load ramps)
+  // The pressure projection's clock: the period (s, 0 = counted in steps or off), the simulated
+  // time since the last projection (state: checkpointed), the count, and the log's line.
+  double projection_time_ = 0;
+  double projection_clock_ = 0;
+  long projection_count_ = 0;
+  std::string projection_description_;
+  bool pressure_projection_due(double dt);
+  void resolve_pressure_projection();
   std::vector<MaterialModelData> materials_;
   Vec gravity_;
   int threads_ = 1;
