@@ -87,6 +87,7 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
 
 template <int dim>
 void Simulation<dim>::resolve_pressure_projection() {
+  if (!has_liquid_) return;  // a dry scene projects nothing and logs nothing about it
   const SolverSettings& settings = description_.solver;
   std::ostringstream line;
   line.precision(3);

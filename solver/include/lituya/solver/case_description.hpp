@@ -101,9 +101,9 @@ struct SolverSettings {
   // linear fields (pressure_projection.cpp): removes the cell-to-cell pressure noise of linear
   // cells, keeps linear (hydrostatic) fields exactly. Every pressure_projection_interval steps
   // when given (0 = never); otherwise every pressure_projection_time seconds of simulated time,
-  // by default 10 still-water steps at Courant 0.5 (simulation.cpp,
-  // default_pressure_projection_time). By time, because each projection damps the water a
-  // little: counted in steps, halving the Courant number doubled it (user manual 2.6).
+  // by default 10 still-water steps at Courant 0.5 (Simulation::resolve_pressure_projection).
+  // By time, because each projection damps the water a little: counted in steps, halving the
+  // Courant number doubled the projections and so their damping (user manual 2.6).
   std::optional<int> pressure_projection_interval;
   std::optional<double> pressure_projection_time;
   // At the same steps, liquid points that over-fill the pores of a soil are moved out until
