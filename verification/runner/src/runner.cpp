@@ -23,6 +23,8 @@ void run_extremes(const CaseContext& context, CaseResult& result);
 void run_extremes_impact(const CaseContext& context, CaseResult& result);
 // verification/speed_accuracy (speed_accuracy.cpp).
 void run_speed_accuracy(const CaseContext& context, CaseResult& result);
+// verification/speed_accuracy_case_b (speed_accuracy_case_b.cpp).
+void run_speed_accuracy_case_b(const CaseContext& context, CaseResult& result);
 
 namespace {
 
@@ -53,6 +55,9 @@ const std::vector<CaseEntry>& all_cases() {
        run_dam_break_late},
       {"speed_accuracy", "Speed against accuracy: the dam break's error vs wall time per knob",
        run_speed_accuracy},
+      {"speed_accuracy_case_b",
+       "Speed against accuracy: Case B's first waves vs wall time per knob, against a fine run",
+       run_speed_accuracy_case_b},
       {"terzaghi", "Terzaghi 1D consolidation", run_terzaghi},
       {"seepage", "Seepage through a sand column (Darcy-Forchheimer)", run_seepage},
       {"sponge", "A long wave leaving a tank through a sponge zone", run_sponge},

@@ -49,4 +49,14 @@ double log_log_slope(const std::vector<double>& x, const std::vector<double>& y)
   return sxy / sxx;
 }
 
+RichardsonEstimate richardson(double f1, double f2, double f3, double r) {
+  const double d12 = f1 - f2, d23 = f2 - f3;
+  if (!(d12 * d23 > 0) || !(r > 1)) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {nan, nan};
+  }
+  const double p = std::log(d12 / d23) / std::log(r);
+  return {p, f3 + (f3 - f2) / (std::pow(r, p) - 1)};
+}
+
 }  // namespace lituya::verify

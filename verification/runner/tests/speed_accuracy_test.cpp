@@ -78,5 +78,24 @@ TEST(LogLogSlope, RecoversThePowerLawExponent) {
   EXPECT_TRUE(std::isnan(log_log_slope({1}, {1})));
 }
 
+// f(h) = 0.05 + 0.3 h^1.5 sampled at h = 0.02, 0.01, 0.005: the estimate recovers the order 1.5
+// and the limit 0.05 to rounding.
+TEST(Richardson, RecoversTheOrderAndTheLimitOfAPowerLaw) {
+  auto f = [](double h) { return 0.05 + 0.3 * std::pow(h, 1.5); };
+  const RichardsonEstimate e = richardson(f(0.02), f(0.01), f(0.005), 2.0);
+  EXPECT_NEAR(e.order, 1.5, 1e-9);
+  EXPECT_NEAR(e.limit, 0.05, 1e-12);
+  // A value that decreases toward its limit works the same way (the differences are negative).
+  const RichardsonEstimate d = richardson(-f(0.02), -f(0.01), -f(0.005), 2.0);
+  EXPECT_NEAR(d.order, 1.5, 1e-9);
+  EXPECT_NEAR(d.limit, -0.05, 1e-12);
+}
+
+TEST(Richardson, NoEstimateWhenTheDifferencesChangeSign) {
+  EXPECT_TRUE(std::isnan(richardson(45.0, 49.8, 46.8, 2.0).order));
+  EXPECT_TRUE(std::isnan(richardson(45.0, 49.8, 46.8, 2.0).limit));
+  EXPECT_TRUE(std::isnan(richardson(1.0, 1.0, 1.0, 2.0).order));  // converged already: no order
+}
+
 }  // namespace
 }  // namespace lituya::verify

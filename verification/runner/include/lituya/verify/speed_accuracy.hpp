@@ -33,4 +33,14 @@ double median(std::vector<double> values);
 // non-positive or non-finite x or y are left out; NaN when fewer than two distinct x remain.
 double log_log_slope(const std::vector<double>& x, const std::vector<double>& y);
 
+// Richardson extrapolation from one quantity at three cell sizes h, h / r, h / r^2 (coarse,
+// medium, fine values f1, f2, f3): with f = f_limit + C h^p, the observed order
+// p = log((f1 - f2) / (f2 - f3)) / log r and the limit f3 + (f3 - f2) / (r^p - 1). Both NaN when
+// the two differences do not have the same sign (the values are not in the asymptotic range).
+struct RichardsonEstimate {
+  double order = 0;
+  double limit = 0;
+};
+RichardsonEstimate richardson(double f1, double f2, double f3, double r);
+
 }  // namespace lituya::verify
