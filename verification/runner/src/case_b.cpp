@@ -18,17 +18,10 @@ void run_case_b(const CaseContext& context, CaseResult& result) {
   const post::PostResult r = post::postprocess(case_folder, post_folder, /*overwrite=*/true);
   if (r.gauge_eta.size() != 2) throw std::runtime_error("case_b: post.toml must name 2 gauges");
 
-  // The first wave at each gauge: from its first sample 5 mm above still water to the record's
-  // next fall below it (post::first_wave_crest). A wave still standing at the end of the run
-  // has no crest yet (NaN: the checks fail).
-  const double onset = 0.005;
-  auto first_crest = [&](const std::vector<double>& eta) {
-    post::WaveCrest c = post::first_wave_crest(r.liquid_time, eta, onset);
-    if (!c.complete) c.time = c.height = NAN;
-    return c;
-  };
-  const post::WaveCrest c1 = first_crest(r.gauge_eta[0]);
-  const post::WaveCrest c2 = first_crest(r.gauge_eta[1]);
+  // The first wave at each gauge (complete_first_wave). A wave still standing at the end of the
+  // run has no crest yet (NaN: the checks fail).
+  const post::WaveCrest c1 = complete_first_wave(r.liquid_time, r.gauge_eta[0]);
+  const post::WaveCrest c2 = complete_first_wave(r.liquid_time, r.gauge_eta[1]);
   // The wave's arrival at a gauge: the record's first rise through half its first crest. The
   // crest's own time is a poor clock: at X1 the first wave has a flat top 0.05-0.1 s long,
   // and which sample of it is highest moves with the noise (crest-to-crest celerities of

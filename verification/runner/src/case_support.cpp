@@ -99,4 +99,12 @@ void write_csv(const std::filesystem::path& file, const std::string& header,
   table.write(file);
 }
 
+post::WaveCrest complete_first_wave(const std::vector<double>& time,
+                                    const std::vector<double>& eta) {
+  const double onset = 0.005;  // m above still water
+  post::WaveCrest c = post::first_wave_crest(time, eta, onset);
+  if (!c.complete) c.time = c.height = c.area = NAN;
+  return c;
+}
+
 }  // namespace lituya::verify

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "lituya/post/postprocess.hpp"
 #include "lituya/solver/solve.hpp"
 
 namespace lituya::verify {
@@ -80,6 +81,12 @@ std::vector<double> read_point_array(const std::filesystem::path& vtu, const std
 std::vector<double> read_positions(const std::filesystem::path& vtu);  // 3 per point
 // The whole .vtu (VTK's reader); throws naming the file when it holds no points.
 vtkSmartPointer<vtkUnstructuredGrid> read_unstructured_grid(const std::filesystem::path& vtu);
+
+// The first wave of a gauge record as verification/case_b reads it: from its first sample 5 mm
+// above still water to the record's next fall below it (post::first_wave_crest); time, height
+// and area NaN when the wave is still standing at the end of the record.
+post::WaveCrest complete_first_wave(const std::vector<double>& time,
+                                    const std::vector<double>& eta);
 
 // Writes a CSV with a header and rows.
 void write_csv(const std::filesystem::path& file, const std::string& header,

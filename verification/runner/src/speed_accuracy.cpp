@@ -15,10 +15,8 @@ void run_speed_accuracy(const CaseContext& context, CaseResult& result) {
   study.name = "speed_accuracy";
   study.problem = "Dam break: error against Ritter";
   study.scene = context.source.parent_path() / "dam_break" / "scene_quick.toml";
-  // The four knobs of the study, as `lituya sweep` names them, in the order of the base.
-  study.keys = {"mesh.cell_size", "mesh.points_per_cell", "stage.release.courant",
-                "material.water.bulk_modulus"};
-  study.names = {"cell_size", "points_per_cell", "courant", "bulk_modulus"};
+  study.keys = trade_knob_keys();
+  study.names = trade_knob_names();
   // The base setting: the dam_break quick scene's (h = 0.02 m, 4 points per cell, Courant 0.5,
   // K_w = 2.15e7 Pa); the quick variant starts from 0.04 m cells to stay within seconds.
   study.base = {"0.02", "4", "0.5", "2.15e7"};

@@ -108,6 +108,19 @@ void plot_error_against_time(const TradeStudy& study, const CaseContext& context
 
 }  // namespace
 
+const std::vector<std::string>& trade_knob_keys() {
+  static const std::vector<std::string> keys = {"mesh.cell_size", "mesh.points_per_cell",
+                                                "stage.release.courant",
+                                                "material.water.bulk_modulus"};
+  return keys;
+}
+
+const std::vector<std::string>& trade_knob_names() {
+  static const std::vector<std::string> names = {"cell_size", "points_per_cell", "courant",
+                                                 "bulk_modulus"};
+  return names;
+}
+
 std::string setting_name(const TradeStudy& study, const std::vector<std::string>& setting) {
   std::string name;
   for (std::size_t k = 0; k < study.names.size(); ++k)

@@ -67,6 +67,12 @@ struct TradeStudy {
   std::function<void(const std::filesystem::path& case_folder, StudyRun& run)> measure;
 };
 
+// The four knobs both studies turn, as `lituya sweep` names them (keys) and as tables and file
+// names do (names), in the order of a setting: cell size, points per cell, the release's
+// Courant number, the water's bulk modulus.
+const std::vector<std::string>& trade_knob_keys();
+const std::vector<std::string>& trade_knob_names();
+
 // "cell_size=0.02_points_per_cell=4_..." for `setting`.
 std::string setting_name(const TradeStudy& study, const std::vector<std::string>& setting);
 
