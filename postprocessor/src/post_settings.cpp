@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A data file named in post.toml: resolved against post.toml's folder, and it must exist.
+// A data file named in post.toml (or the scene's [post]): resolved against that file's
+// folder, and it must exist.
 std::string referenced_file(const TomlTable& root, const fs::path& post_toml, const char* key) {
   const std::string name = root.string(key);
   if (name.empty())
@@ -27,7 +28,7 @@ std::string referenced_file(const TomlTable& root, const fs::path& post_toml, co
   file = fs::absolute(file).lexically_normal();
   if (!fs::is_regular_file(file))
     root.fail(std::string(key) + " file " + file.string() +
-                  " does not exist (paths are relative to post.toml)",
+                  " does not exist (paths are relative to " + post_toml.filename().string() + ")",
               key);
   return file.string();
 }
@@ -173,7 +174,10 @@ PostSettings read_post_settings(const fs::path& post_toml) {
   TomlDocument document(post_toml);
   TomlTable root = document.root();
   TomlDocument::check_header(root, "lituya-post", 1);
+  return read_post_table(root, post_toml);
+}
 
+PostSettings read_post_table(const TomlTable& root, const fs::path& post_toml) {
   PostSettings s;
   s.file = post_toml.string();
 

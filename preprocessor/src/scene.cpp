@@ -9,6 +9,7 @@
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/safe_name.hpp"
 #include "lituya/common/toml_reader.hpp"
+#include "lituya/post/postprocess.hpp"
 #include "lituya/pre/case_writer.hpp"
 #include "lituya/pre/seeding.hpp"
 
@@ -367,6 +368,10 @@ void read_post(const TomlTable& root, const fs::path& scene_file, Scene& scene) 
   }
   for (const char* key : kPostDataKeys)
     if (post->has(key)) add_post_data_file(*post, scene_file, key, settings);
+  // Everything else `lituya post` will ask of this table (a slope frame for a slide, a still
+  // water level for gauges, unknown keys), checked now at the scene's lines: found only at
+  // the post step, such an error came after the whole solve (or, in a sweep, after every run).
+  post::read_post_table(*post, scene_file);
   scene.post = std::move(settings);
 }
 

@@ -245,6 +245,25 @@ TEST_F(BadScene, PostReferenceEmpty) {
   expect_error(scene, "scene.toml", line_of(scene, "reference"), {"'post.reference'", "empty"});
 }
 
+// What `lituya post` would refuse is refused by pre, at the scene's line: found at the post
+// step, a missing slope frame came after the whole solve (and a sweep solved every run first).
+TEST_F(BadScene, PostSlideWithoutItsSlopeFrame) {
+  const auto scene = kScene + "\n[post]\nstage = \"gravity\"\ntrack_materials = [\"sand\"]\n";
+  expect_error(scene, "scene.toml", line_of(scene, "[post]"), {"slope_origin"});
+}
+
+TEST_F(BadScene, PostGaugesWithoutTheStillWaterLevel) {
+  const auto scene = kScene + "\n[post]\nstage = \"gravity\"\ngauges = [0.5]\n";
+  expect_error(scene, "scene.toml", line_of(scene, "gauges = [0.5]"), {"still_water_level"});
+}
+
+TEST_F(BadScene, PostUnknownKey) {
+  const auto scene = kScene +
+                     "\n[post]\nstage = \"gravity\"\ntrack_materials = [\"sand\"]\n"
+                     "slope_origin = [0.0, 0.0]\nslope_angle = 0.0\nprofile_time = [0.1]\n";
+  expect_error(scene, "scene.toml", line_of(scene, "profile_time"), {"profile_time"});
+}
+
 // Every data file [post] names is copied into the case folder and post.toml names the copy,
 // so `lituya post` reads the case folder alone. Two files of the same name both survive.
 TEST_F(BadScene, PostDataFilesAreCopiedIntoTheCase) {
@@ -460,7 +479,8 @@ poisson_ratio = 0.3
 )";
   const auto scene = replaced(kScene, "[[region]]", second + "[[region]]") +
                      "\n[output]\npoint_fields = [\"velocity\"]\n"
-                     "\n[post]\nstage = \"gravity\"\ntrack_materials = [\"sand\"]\n";
+                     "\n[post]\nstage = \"gravity\"\ntrack_materials = [\"sand\"]\n"
+                     "slope_origin = [0.0, 0.0]\nslope_angle = 0.0\n";
   expect_error(scene, "scene.toml", line_of(scene, "point_fields"),
                {"'point_fields' leaves out \"material\"", "track_materials"});
 }

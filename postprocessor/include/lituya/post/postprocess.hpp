@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include "lituya/common/toml_reader.hpp"
 #include "lituya/post/reference_error.hpp"
 
 namespace lituya::post {
@@ -65,6 +66,10 @@ struct PostSettings {
                        // or liquid_stage), where a missing liquid series is reported
 };
 PostSettings read_post_settings(const std::filesystem::path& post_toml);
+// The same checks on a table already open: `lituya pre` runs them on the scene's [post], so
+// that a key post would refuse is an error at the scene's line before anything is solved.
+// Data files are resolved against `file`'s folder.
+PostSettings read_post_table(const TomlTable& root, const std::filesystem::path& file);
 
 // Material names in id order (id = position in the [[material]] list of materials.toml).
 std::vector<std::string> read_material_names(const std::filesystem::path& materials_toml);
