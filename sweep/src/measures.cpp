@@ -20,8 +20,14 @@ struct Kind {
   const char* csv;
   const char* column;  // nullptr: the gauge's name
   Reduction reduction;
-  enum Needs { kGauges, kSlide, kLeadingWave } needs;
+  enum Needs { kGauges, kSlide, kLeadingWave, kHistory } needs;
 };
+
+// The solver's own table of the stage `lituya post` reads (output/<stage>_history.csv, one
+// row per output), seen from the post folder: it needs no [post] key.
+std::string history_table(const std::string& stage) {
+  return "../output/" + stage + "_history.csv";
+}
 
 constexpr Kind kKinds[] = {
     {"gauge_max", "gauges.csv", nullptr, Reduction::kMax, Kind::kGauges},
@@ -32,6 +38,9 @@ constexpr Kind kKinds[] = {
     {"front_travel_max", "runout.csv", "front_travel", Reduction::kMax, Kind::kSlide},
     {"wall_height_final", "wall_height.csv", "wall_height", Reduction::kLast, Kind::kSlide},
     {"wall_height_max", "wall_height.csv", "wall_height", Reduction::kMax, Kind::kSlide},
+    {"kinetic_energy_solid_max", nullptr, "kinetic_energy_solid", Reduction::kMax, Kind::kHistory},
+    {"kinetic_energy_liquid_max", nullptr, "kinetic_energy_liquid", Reduction::kMax,
+     Kind::kHistory},
 };
 
 std::string trim(const std::string& s, const char* blanks = " \t\r") {
@@ -58,13 +67,22 @@ std::vector<std::string> split(const std::string& line) {
 }  // namespace
 
 std::string measure_unit(const std::string& name) {
-  return name.substr(0, name.find(':')) == "gauge_first_wave_area" ? "m s" : "m";
+  const std::string kind = name.substr(0, name.find(':'));
+  if (kind == "gauge_first_wave_area") return "m s";
+  if (kind.rfind("kinetic_energy_", 0) == 0) return "J, per m in 2D";
+  return "m";
 }
 
 PostContent post_content(const toml::table& scene) {
   PostContent content;
+  // The stage whose history the kinetic energy measures read: [post] stage when given, else
+  // the scene's last stage.
+  if (const toml::array* stages = scene.get_as<toml::array>("stage"); stages && !stages->empty())
+    if (const toml::table* last = stages->back().as_table())
+      content.stage = (*last)["name"].value_or(content.stage);
   const toml::table* post = scene.get_as<toml::table>("post");
   if (!post) return content;
+  content.stage = (*post)["stage"].value_or(content.stage);
   content.present = true;
   content.line = static_cast<int>(post->source().begin.line);
   if (const toml::array* gauges = post->get_as<toml::array>("gauges")) {
@@ -107,6 +125,7 @@ std::vector<Measure> parse_measures(const std::vector<std::string>& specs, const
       throw InputError("--measure", 0,
                        "unknown measure '" + spec + "'; the measures are: " + measure_list());
     auto need = [&](bool has, const std::string& what) {
+      if (kind->needs == Kind::kHistory) return;
       if (!post.present)
         throw InputError(scene_file, 0,
                          "measure '" + spec +
@@ -127,9 +146,12 @@ std::vector<Measure> parse_measures(const std::vector<std::string>& specs, const
       case Kind::kLeadingWave:
         need(post.leading_wave, "leading_wave = true");
         break;
+      case Kind::kHistory:
+        break;
     }
     if (kind->column) {
-      measures.push_back({kind->name, kind->csv, kind->column, kind->reduction});
+      measures.push_back({kind->name, kind->csv ? kind->csv : history_table(post.stage),
+                          kind->column, kind->reduction, kind->needs == Kind::kHistory});
       continue;
     }
     std::vector<std::string> gauges = post.gauge_names;
@@ -170,7 +192,7 @@ std::vector<double> CsvTable::column(const std::string& name, const std::string&
   return values;
 }
 
-CsvTable read_csv(const std::filesystem::path& file) {
+CsvTable read_csv(const std::filesystem::path& file, bool text_as_nan) {
   std::ifstream in(file);
   if (!in) throw InputError(file.string(), 0, "cannot open the table (was it written?)");
   CsvTable table;
@@ -196,9 +218,12 @@ CsvTable read_csv(const std::filesystem::path& file) {
       }
       char* end = nullptr;
       const double v = std::strtod(f.c_str(), &end);
-      if (end != f.c_str() + f.size())
+      if (end == f.c_str() + f.size())
+        row.push_back(v);
+      else if (text_as_nan)
+        row.push_back(NAN);
+      else
         throw InputError(file.string(), number, "'" + f + "' is not a number");
-      row.push_back(v);
     }
     table.rows.push_back(std::move(row));
   }
@@ -207,8 +232,8 @@ CsvTable read_csv(const std::filesystem::path& file) {
 }
 
 double take_measure(const Measure& measure, const std::filesystem::path& post_folder) {
-  const std::filesystem::path file = post_folder / measure.csv;
-  const CsvTable table = read_csv(file);
+  const std::filesystem::path file = (post_folder / measure.csv).lexically_normal();
+  const CsvTable table = read_csv(file, measure.text_columns);
   const std::vector<double> values = table.column(measure.column, file.string());
   switch (measure.reduction) {
     case Reduction::kLast:

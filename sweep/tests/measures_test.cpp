@@ -103,4 +103,36 @@ TEST(Measures, AreCheckedAgainstTheScenePostTable) {
             std::string::npos);
 }
 
+// The kinetic energies come from the solver's history of the stage post reads ([post] stage,
+// else the last [[stage]]), which every solve writes: no [post] key is needed, not even a table.
+TEST(Measures, KineticEnergyFromTheStageHistory) {
+  const fs::path post = post_folder("history") / "post";
+  fs::create_directories(post.parent_path() / "output");
+  std::ofstream(post.parent_path() / "output" / "release_history.csv")
+      << "time,stage,stage_time,step,time_step,kinetic_energy_solid,kinetic_energy_liquid,"
+         "kinetic_energy,max_speed_solid,max_speed_liquid\n"
+         "0.2,release,0.0,10,1e-5,0.5,0.0,0.5,0.1,0.0\n"
+         "0.3,release,0.1,20,1e-5,2.5,0.25,2.75,0.9,0.3\n"
+         "0.4,release,0.2,30,1e-5,1.5,0.75,2.25,0.6,0.5\n";
+  const PostContent without_post =
+      post_content(toml::parse("[[stage]]\nname = 'gravity'\n[[stage]]\nname = 'release'\n"));
+  EXPECT_FALSE(without_post.present);
+  EXPECT_EQ(without_post.stage, "release");
+  const std::vector<Measure> measures = parse_measures(
+      {"kinetic_energy_solid_max", "kinetic_energy_liquid_max"}, without_post, "scene.toml");
+  ASSERT_EQ(measures.size(), 2u);
+  EXPECT_DOUBLE_EQ(take_measure(measures[0], post), 2.5);  // the folder post/ need not exist
+  EXPECT_DOUBLE_EQ(take_measure(measures[1], post), 0.75);
+  EXPECT_EQ(measure_unit(measures[0].name), "J, per m in 2D");
+
+  // [post] stage wins over the last stage; a missing history names the file.
+  const PostContent gravity = post_content(toml::parse(
+      "[[stage]]\nname = 'gravity'\n[[stage]]\nname = 'release'\n[post]\nstage = 'gravity'\n"));
+  const Measure from_gravity =
+      parse_measures({"kinetic_energy_solid_max"}, gravity, "scene.toml").front();
+  EXPECT_NE(
+      input_error_message([&] { take_measure(from_gravity, post); }).find("gravity_history.csv"),
+      std::string::npos);
+}
+
 }  // namespace

@@ -12,10 +12,15 @@
 //   front_travel_max           highest front_travel (runout.csv)
 //   wall_height_final          wall_height at the last output (wall_height.csv)
 //   wall_height_max            highest wall_height (wall_height.csv)
+//   kinetic_energy_solid_max   highest kinetic energy of the solid points, J (J/m in 2D),
+//                              from the solver's output/<stage>_history.csv: the [post]
+//                              stage, else the scene's last; needs no [post] key
+//   kinetic_energy_liquid_max  the same for the liquid points
 //
 // A gauge measure without :GAUGE stands for one measure per gauge of the scene. All measures
-// but gauge_first_wave_area are lengths in m. A measure without a value (no water ever reached the
-// gauge, no crest, a blank last row) is NaN, a blank cell in sweep.csv.
+// but gauge_first_wave_area and the kinetic energies are lengths in m. A measure without a value
+// (no water ever reached the gauge, no crest, a blank last row) is NaN, a blank cell in sweep.csv.
+// The kinetic energies are in J (per metre of width in 2D).
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -29,9 +34,10 @@ enum class Reduction { kLast, kMax, kFirstCrest, kFirstWaveArea };
 
 struct Measure {
   std::string name;    // the sweep.csv column, e.g. "gauge_first_crest:G1"
-  std::string csv;     // the file in the post folder, e.g. "gauges.csv"
+  std::string csv;     // the file, relative to the post folder, e.g. "gauges.csv"
   std::string column;  // its column, e.g. "G1"
   Reduction reduction = Reduction::kLast;
+  bool text_columns = false;  // the table has text columns (a history's stage name): NaN
 };
 
 // What the scene's [post] table asks `lituya post` to write.
@@ -41,6 +47,7 @@ struct PostContent {
   std::vector<std::string> gauge_names;  // gauge_names, or the defaults "x=<gauges[i]>"
   bool slide = false;                    // track_materials names a material
   bool leading_wave = false;
+  std::string stage = "release";  // whose history the kinetic energy measures read
 };
 PostContent post_content(const toml::table& scene);
 
@@ -70,7 +77,9 @@ struct CsvTable {
   // The values of `name`; InputError naming `file` when there is no such column.
   std::vector<double> column(const std::string& name, const std::string& file) const;
 };
-CsvTable read_csv(const std::filesystem::path& file);
+// A field that is not a number is an InputError naming the file and line, or NaN with
+// `text_as_nan`.
+CsvTable read_csv(const std::filesystem::path& file, bool text_as_nan = false);
 
 // gauge_first_crest is the height of post::first_wave_crest() (the highest sample of the
 // first wave, from its first sample above kCrestOnset to the record's next fall below still
