@@ -21,10 +21,11 @@ struct Kind {
   const char* column;  // nullptr: the gauge's name
   Reduction reduction;
   enum Needs { kGauges, kSlide, kLeadingWave, kHistory } needs;
+  const char* unit = "m";
 };
 
-// The solver's own table of the stage `lituya post` reads (output/<stage>_history.csv, one
-// row per output), seen from the post folder: it needs no [post] key.
+// The solver's own table of the stage `lituya post` reads (output/<stage>_history.csv), seen
+// from the post folder: it needs no [post] key.
 std::string history_table(const std::string& stage) {
   return "../output/" + stage + "_history.csv";
 }
@@ -32,15 +33,17 @@ std::string history_table(const std::string& stage) {
 constexpr Kind kKinds[] = {
     {"gauge_max", "gauges.csv", nullptr, Reduction::kMax, Kind::kGauges},
     {"gauge_first_crest", "gauges.csv", nullptr, Reduction::kFirstCrest, Kind::kGauges},
-    {"gauge_first_wave_area", "gauges.csv", nullptr, Reduction::kFirstWaveArea, Kind::kGauges},
+    {"gauge_first_wave_area", "gauges.csv", nullptr, Reduction::kFirstWaveArea, Kind::kGauges,
+     "m s"},
     {"leading_wave_max", "leading_wave.csv", "crest_height", Reduction::kMax, Kind::kLeadingWave},
     {"front_travel_final", "runout.csv", "front_travel", Reduction::kLast, Kind::kSlide},
     {"front_travel_max", "runout.csv", "front_travel", Reduction::kMax, Kind::kSlide},
     {"wall_height_final", "wall_height.csv", "wall_height", Reduction::kLast, Kind::kSlide},
     {"wall_height_max", "wall_height.csv", "wall_height", Reduction::kMax, Kind::kSlide},
-    {"kinetic_energy_solid_max", nullptr, "kinetic_energy_solid", Reduction::kMax, Kind::kHistory},
-    {"kinetic_energy_liquid_max", nullptr, "kinetic_energy_liquid", Reduction::kMax,
-     Kind::kHistory},
+    {"kinetic_energy_solid_max", nullptr, "kinetic_energy_solid", Reduction::kMax, Kind::kHistory,
+     "J, per m in 2D"},
+    {"kinetic_energy_liquid_max", nullptr, "kinetic_energy_liquid", Reduction::kMax, Kind::kHistory,
+     "J, per m in 2D"},
 };
 
 std::string trim(const std::string& s, const char* blanks = " \t\r") {
@@ -68,21 +71,25 @@ std::vector<std::string> split(const std::string& line) {
 
 std::string measure_unit(const std::string& name) {
   const std::string kind = name.substr(0, name.find(':'));
-  if (kind == "gauge_first_wave_area") return "m s";
-  if (kind.rfind("kinetic_energy_", 0) == 0) return "J, per m in 2D";
+  for (const Kind& k : kKinds)
+    if (kind == k.name) return k.unit;
   return "m";
 }
 
 PostContent post_content(const toml::table& scene) {
   PostContent content;
-  // The stage whose history the kinetic energy measures read: [post] stage when given, else
-  // the scene's last stage.
-  if (const toml::array* stages = scene.get_as<toml::array>("stage"); stages && !stages->empty())
-    if (const toml::table* last = stages->back().as_table())
-      content.stage = (*last)["name"].value_or(content.stage);
+  // The stage whose history the kinetic energy measures read: the one `lituya post` reads
+  // ([post] stage, with post's default), or the scene's last stage when there is no [post].
+  const std::string post_default = post::PostSettings{}.stage;
   const toml::table* post = scene.get_as<toml::table>("post");
-  if (!post) return content;
-  content.stage = (*post)["stage"].value_or(content.stage);
+  if (!post) {
+    content.stage = post_default;
+    if (const toml::array* stages = scene.get_as<toml::array>("stage"); stages && !stages->empty())
+      if (const toml::table* last = stages->back().as_table())
+        content.stage = (*last)["name"].value_or(post_default);
+    return content;
+  }
+  content.stage = (*post)["stage"].value_or(post_default);
   content.present = true;
   content.line = static_cast<int>(post->source().begin.line);
   if (const toml::array* gauges = post->get_as<toml::array>("gauges")) {
@@ -125,7 +132,6 @@ std::vector<Measure> parse_measures(const std::vector<std::string>& specs, const
       throw InputError("--measure", 0,
                        "unknown measure '" + spec + "'; the measures are: " + measure_list());
     auto need = [&](bool has, const std::string& what) {
-      if (kind->needs == Kind::kHistory) return;
       if (!post.present)
         throw InputError(scene_file, 0,
                          "measure '" + spec +

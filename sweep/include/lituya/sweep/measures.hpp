@@ -13,8 +13,9 @@
 //   wall_height_final          wall_height at the last output (wall_height.csv)
 //   wall_height_max            highest wall_height (wall_height.csv)
 //   kinetic_energy_solid_max   highest kinetic energy of the solid points, J (J/m in 2D),
-//                              from the solver's output/<stage>_history.csv: the [post]
-//                              stage, else the scene's last; needs no [post] key
+//                              from the solver's output/<stage>_history.csv: the stage
+//                              `lituya post` reads, or without [post] the scene's last;
+//                              needs no [post] key
 //   kinetic_energy_liquid_max  the same for the liquid points
 //
 // A gauge measure without :GAUGE stands for one measure per gauge of the scene. All measures
@@ -47,15 +48,15 @@ struct PostContent {
   std::vector<std::string> gauge_names;  // gauge_names, or the defaults "x=<gauges[i]>"
   bool slide = false;                    // track_materials names a material
   bool leading_wave = false;
-  std::string stage = "release";  // whose history the kinetic energy measures read
+  std::string stage;  // whose history the kinetic energy measures read (post_content sets it)
 };
 PostContent post_content(const toml::table& scene);
 
 // The measure names a user may give, for messages.
 std::string measure_list();
 
-// The unit of a measure's values, from its name ("gauge_first_wave_area:X1" -> "m s"): "m"
-// for all others.
+// The unit of a measure's values, from its kind ("gauge_first_wave_area:X1" -> "m s"); "m"
+// for the lengths.
 std::string measure_unit(const std::string& name);
 
 // Expands and checks the measures given by the user (each "KIND" or "KIND:GAUGE") against the
