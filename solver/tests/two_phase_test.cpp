@@ -370,8 +370,8 @@ TEST(TwoPhase, WaterTableInsideASoilStaysPut) {
 // and the layer stays put for tan(theta) < mu (rho_sat - rho_w) / rho_sat. The water slides
 // along the bed (a roller for the liquid phase). The layer first settles on a glued bed, so
 // that the release starts from equilibrium stresses. Returns the mean along-slope speed of
-// the solid after `time`.
-double saturated_layer_speed(double theta_deg, double mu, double time) {
+// the solid after `time` (saturated_layer_speed) or the simulation (slide_saturated_layer).
+Simulation<2> slide_saturated_layer(double theta_deg, double mu, double time) {
   BoxScene<2> s;
   s.domain_size = {2.0, 0.3};
   s.cells = {80, 12};
@@ -401,7 +401,29 @@ double saturated_layer_speed(double theta_deg, double mu, double time) {
   Stage slide = dynamic_stage(time);
   slide.boundaries = {"bed", "bed_water"};
   sim.run_stage(slide, nullptr);
-  return mean_velocity(sim.points(), 0);
+  return sim;
+}
+
+double saturated_layer_speed(double theta_deg, double mu, double time) {
+  return mean_velocity(slide_saturated_layer(theta_deg, mu, time).points(), 0);
+}
+
+TEST(TwoPhase, SlidingSaturatedLayerKeepsItsPoreWater) {
+  // The layer of SaturatedLayerSlidesAtTheEffectiveStressFriction after its 0.2 s slide:
+  // its pores were full with the water table at its surface, and nothing drives water out
+  // (the pore pressure is hydrostatic across the layer; Darcy's flux at this permeability,
+  // about 1e-4 m/s, moves it 0.02 mm in 0.2 s). Reference: the water's mean height equals the
+  // grains'. Tolerance 0.5 mm, a fiftieth of a cell (the points of the two phases start at
+  // the same places; the ringing of the release moves them apart by less). Measured before
+  // the pore volume projection counted the pores with the soil's own quadrature
+  // (pore_volume_projection.cpp): 10.0 mm, a sixth of the water moved to the layer's surface.
+  const Simulation<2> sim = slide_saturated_layer(30, 0.3, 0.2);
+  double solid_height = 0, water_height = 0;
+  for (const auto& x : sim.points().position) solid_height += x(1);
+  for (const auto& x : sim.liquid().position) water_height += x(1);
+  solid_height /= static_cast<double>(sim.points().size());
+  water_height /= static_cast<double>(sim.liquid().size());
+  EXPECT_NEAR(water_height, solid_height, 5e-4);
 }
 
 TEST(TwoPhase, SaturatedLayerSlidesAtTheEffectiveStressFriction) {
@@ -433,6 +455,26 @@ TEST(TwoPhase, SaturatedLayerSlidesAtTheEffectiveStressFriction) {
   // row of this layer is half empty): 0.6114 m/s, 15.9 % low; with the free and pore water as
   // two fields, 0.6131 m/s. Tried and lost: the grains' lift-off at a bed node resisted by the
   // drag against pore water that the wall holds (lift-off times m_s / (m_s + a)): 0.5940.
+  // December 2026 (stop 25), what the excess is, logged on the bed nodes every step of the
+  // slide (an experimental build; verification/saturated_block_fine/known-failure.md):
+  // - The nodal law rectifies a ringing. Summed over the bed nodes, the skeleton's push
+  //   (approach less the pore-pressure push, m_s / dt times) averages 780-910 N/m over each
+  //   500 steps, sigma'_n L = 841 N/m, but its positive part, which the friction takes,
+  //   1230-1290 N/m (1.5 times). The rear half of the layer does not ring (positive part =
+  //   mean, node by node); the front half does: at x = 1.2 m the push swings 3 -> 156 N/m and
+  //   the bed's pore pressure 0 -> 1180 Pa (hydrostatic 850 Pa) in about 30 steps, the
+  //   layer's undrained vertical mode (4 H / c_u = 1.6 ms, c_u = 247 m/s).
+  // - The pore pressure is not held even without friction: at mu = 0 nothing rings and the
+  //   speed is g sin(theta) t to 4 digits, yet the mean pressure of the liquid points swings
+  //   between 330 and 420 Pa (387 Pa at the release) with the pressure projection off, and
+  //   falls to 120-260 Pa with it; the skeleton's mean push grows to 1.4-1.5 sigma'_n L (mu =
+  //   0.1: no ringing, friction +33 %). Eq. (8)'s rate form (issue 8 item 2).
+  // - Not the knobs: liquid_bulk_viscosity 0.5 / 2 gives 0.606 / 0.627, a soil PIC damping
+  //   time of 0.01 s 0.618; friction on the force part of the approach only (the remapped
+  //   velocity taken out) 0.622 (all against 0.616, before the fix below). Halving the cells
+  //   (0.0125 m, before the fix) gives 0.657, 9.7 % low: the excess falls at order ~0.7.
+  // - Found on the way: the pore volume projection moved a sixth of the layer's water to its
+  //   surface (SlidingSaturatedLayerKeepsItsPoreWater); with that fixed, 0.6174 m/s.
   const double theta = 30 * std::acos(-1.0) / 180, mu = 0.3, t = 0.2;
   const double rho_sat = 0.6 * 2650 + 0.4 * 1000;
   const double a = 9.81 * (std::sin(theta) - mu * std::cos(theta) * (rho_sat - 1000) / rho_sat);
