@@ -197,6 +197,9 @@ SolverSettings read_solver_settings(const TomlTable& t) {
   if (t.has("pressure_projection_time"))
     s.pressure_projection_time = t.number_in_or("pressure_projection_time", 1e-12, 1e9, 1.0);
   s.pore_volume_projection = t.boolean_or("pore_volume_projection", s.pore_volume_projection);
+  s.liquid_pressure = t.choice_or("liquid_pressure", {"points", "nodal_fit"}, "points") == "points"
+                          ? LiquidPressure::kPoints
+                          : LiquidPressure::kNodalFit;
   s.liquid_bulk_viscosity =
       t.number_in_or("liquid_bulk_viscosity", 0.0, 1.0, s.liquid_bulk_viscosity);
   // Fractions of a minute are allowed: tests checkpoint a run of seconds.
@@ -408,6 +411,7 @@ toml::table to_toml(const SolverSettings& s) {
   if (s.pressure_projection_interval)
     t.insert("pressure_projection_interval", *s.pressure_projection_interval);
   if (s.pressure_projection_time) t.insert("pressure_projection_time", *s.pressure_projection_time);
+  if (s.liquid_pressure == LiquidPressure::kNodalFit) t.insert("liquid_pressure", "nodal_fit");
   return t;
 }
 

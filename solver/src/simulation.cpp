@@ -120,6 +120,9 @@ void Simulation<dim>::resolve_pressure_projection() {
            << " steps of still water at Courant " << kDefaultProjectionCourant << ")";
     }
   }
+  if (nodal_pressure_)
+    line << "; liquid_pressure = \"nodal_fit\": no pressure is projected, the clock runs the pore "
+            "water volume projection only";
   projection_description_ = line.str();
 }
 
@@ -366,8 +369,12 @@ void Simulation<dim>::step(double dt, double damping) {
   if (has_liquid_) {
     update_liquid_and_relocate(dt);
     if (pressure_projection_due(dt)) {
-      project_liquid_pressure();
-      ++projection_count_;
+      // With the nodal fit the pressure needs no filter; the clock still runs the pore water
+      // volume projection.
+      if (!nodal_pressure_) {
+        project_liquid_pressure();
+        ++projection_count_;
+      }
       if (description_.solver.pore_volume_projection) project_pore_water_volume();
     }
   }

@@ -123,6 +123,8 @@ void Simulation<dim>::setup_liquid() {
   smallest_cell_height_ =
       *std::min_element(mesh_.cell_min_height.begin(), mesh_.cell_min_height.end());
   liquid_flux_divergence_.assign(liquid.size(), 0.0);
+  smoothed_flux_divergence_.assign(liquid.size(), 0.0);
+  nodal_pressure_ = description_.solver.liquid_pressure == LiquidPressure::kNodalFit;
   // Sponge zones: sigma at each node once, the strongest zone where two overlap. A node is
   // damped by its own position; the water in a cell sees the linear blend of its nodes.
   if (!description_.sponges.empty()) {
@@ -215,12 +217,72 @@ void Simulation<dim>::liquid_to_nodes() {
   // Bishop's effective stress with chi = S_r, the degree of saturation W / (n V_i): a node
   // whose pores the water only partly fills passes that fraction of the pressure to the grains.
   const LiquidSums<dim>& sums = water_.nodal.sums();
+  // With liquid_pressure = "nodal_fit" (experimental; scientific manual 10.4) the nodal
+  // pressure is fitted at each node, every step, by the volume-weighted linear least-squares
+  // fit a_i + b_i . (x - x_i) of the point pressures in the node's cells (weights N_i V). Its
+  // value a_i = alpha_i sum N V p + beta_i . sum N V (x - x_i) p is exact for any linear
+  // field whatever the points' spread, so a hydrostatic state is untouched at free surfaces
+  // and walls too (a plain nodal average is one-sided there). The water's force and the
+  // grains' pore pressure both take it. Eq. (8) then takes the adjoint smoothing of the flux
+  // divergence (update_liquid_and_relocate), so the force's power equals the pressure's
+  // energy change and the P1/P0 checkerboard exerts no force and is not driven: no periodic
+  // projection. A node whose points do not span it (spread below a tenth of the smallest
+  // cell height) keeps the plain average.
+  if (nodal_pressure_) {
+    using Mat = Eigen::Matrix<double, dim, dim>;
+    // Moments of the water volume about each node: w = N_i V, d = x - x_i.
+    coupling_.run(
+        liquid.size(),
+        [](CouplingSums& c) {
+          return std::tie(c.volume_first_moment, c.pressure_first_moment, c.volume_second_moment);
+        },
+        [&](CouplingSums& c, std::size_t q) {
+          const auto& nodes = mesh_.cell_nodes[liquid.cell[q]];
+          Vec x = Vec::Zero();
+          for (int i = 0; i <= dim; ++i) x += water_.shape[q](i) * mesh_.node_position[nodes[i]];
+          for (int i = 0; i <= dim; ++i) {
+            const double w = water_.shape[q](i) * liquid.volume[q];
+            const Vec d = x - mesh_.node_position[nodes[i]];
+            c.volume_first_moment[nodes[i]] += w * d;
+            c.pressure_first_moment[nodes[i]] += (w * liquid.pressure[q]) * d;
+            c.volume_second_moment[nodes[i]] += w * d * d.transpose();
+          }
+        });
+    const CouplingSums& m = coupling_.sums();
+    node_fit_alpha_.resize(n_nodes);
+    node_fit_beta_.resize(n_nodes);
+    for (std::size_t i = 0; i < n_nodes; ++i) {
+      const double m0 = sums.water_volume[i];
+      node_fit_alpha_[i] = m0 > 0 ? 1.0 / m0 : 0.0;
+      node_fit_beta_[i] = Vec::Zero();
+      if (!(m0 > 0)) continue;
+      const Vec mean = m.volume_first_moment[i] / m0;
+      const Mat spread = m.volume_second_moment[i] / m0 - mean * mean.transpose();
+      Eigen::SelfAdjointEigenSolver<Mat> eig(spread);
+      const double h = smallest_cell_height_;
+      if (!(eig.eigenvalues().minCoeff() > 0.01 * h * h)) continue;
+      Eigen::Matrix<double, dim + 1, dim + 1> M;
+      M(0, 0) = m0;
+      M.template block<1, dim>(0, 1) = m.volume_first_moment[i].transpose();
+      M.template block<dim, 1>(1, 0) = m.volume_first_moment[i];
+      M.template block<dim, dim>(1, 1) = m.volume_second_moment[i];
+      Eigen::Matrix<double, dim + 1, 1> e1 = Eigen::Matrix<double, dim + 1, 1>::Zero();
+      e1(0) = 1;
+      const Eigen::Matrix<double, dim + 1, 1> x = M.ldlt().solve(e1);
+      node_fit_alpha_[i] = x(0);
+      node_fit_beta_[i] = x.template tail<dim>();
+    }
+  }
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i) {
     const double pore_volume = node_porosity_[i] * node_mesh_volume_[i];
     node_pressure_[i] = sums.water_volume[i] > 0 ? sums.water_volume_pressure[i] /
                                                        std::max(sums.water_volume[i], pore_volume)
                                                  : 0.0;
+    if (nodal_pressure_ && sums.water_volume[i] > 0)
+      node_pressure_[i] = (node_fit_alpha_[i] * sums.water_volume_pressure[i] +
+                           node_fit_beta_[i].dot(coupling_.sums().pressure_first_moment[i])) *
+                          std::min(1.0, sums.water_volume[i] / pore_volume);
   }
   coupling_.run(
       points.size(), [](CouplingSums& c) { return std::tie(c.grain_pressure_force); },
@@ -236,6 +298,25 @@ void Simulation<dim>::liquid_to_nodes() {
         for (int i = 0; i <= dim; ++i)
           c.grain_pressure_force[nodes[i]] += pore_pressure * grain_volume * grad[i];
       });
+  if (nodal_pressure_) {
+    const CouplingSums& m = coupling_.sums();
+    coupling_.run(
+        liquid.size(), [](CouplingSums& c) { return std::tie(c.water_pressure_force); },
+        [&](CouplingSums& c, std::size_t q) {
+          const int cell = liquid.cell[q];
+          const auto& nodes = mesh_.cell_nodes[cell];
+          const auto& grad = mesh_.cell_shape_gradient[cell];
+          double smoothed = 0;
+          for (int i = 0; i <= dim; ++i) {
+            const std::size_t node = static_cast<std::size_t>(nodes[i]);
+            smoothed +=
+                water_.shape[q](i) * (node_fit_alpha_[node] * sums.water_volume_pressure[node] +
+                                      node_fit_beta_[node].dot(m.pressure_first_moment[node]));
+          }
+          const double w = smoothed * liquid.volume[q];
+          for (int i = 0; i <= dim; ++i) c.water_pressure_force[nodes[i]] += w * grad[i];
+        });
+  }
 }
 
 namespace {
@@ -318,7 +399,9 @@ void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
         velocity_from_momentum(Vec(liquid.momentum[i] - liquid.pore_momentum[i]), mf);
     const Vec vp_old = velocity_from_momentum(liquid.pore_momentum[i], mp);
     // Eqs. (15), (16): the pore-pressure force shared by the volumes the phases fill.
-    const Vec pressure_force = liquid.pressure_force[i] + coupling.grain_pressure_force[i];
+    const Vec pressure_force =
+        (nodal_pressure_ ? coupling.water_pressure_force[i] : liquid.pressure_force[i]) +
+        coupling.grain_pressure_force[i];
     const double water_share = pore_pressure_water_share(i);
     const Vec water_force = water_share * pressure_force;
     // The water's share goes to its two fields by mass (one pressure per node, one
@@ -455,7 +538,8 @@ typename Simulation<dim>::Vec Simulation<dim>::wall_pore_pressure_push(int node,
   const double wet_volume =
       std::min(node_mesh_volume_[node], water_.nodal.sums().water_volume[node] / n);
   const Vec gradient_load = materials_[pore_liquid_].liquid_density * wet_volume * gravity_;
-  const Vec wall = water_.nodal.sums().pressure_force[node] +
+  const Vec wall = (nodal_pressure_ ? coupling_.sums().water_pressure_force[node]
+                                    : water_.nodal.sums().pressure_force[node]) +
                    coupling_.sums().grain_pressure_force[node] + gradient_load;
   // The grains' share of the pore-pressure force, as in two_phase_nodal_update: the push must
   // give back exactly what the nodal update gave the grains, or the difference acts as a
@@ -554,6 +638,27 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
     for (int k = 0; k < dim; ++k) tau(k) += zeta * divergence / n;
   }
 
+  // With the nodal fit (liquid_to_nodes), each point's pressure takes the V-adjoint of the
+  // fit of the divergence: sum_i N_i (alpha_i + beta_i . (x - x_i)) sum N V div(q), positions
+  // at the start of the step (from the shape values, exact for linear cells).
+  const double* divergence = liquid_flux_divergence_.data();
+  if (nodal_pressure_) {
+    const std::vector<double>& nodal = scatter_liquid(liquid_flux_divergence_);
+#pragma omp parallel for num_threads(threads_) schedule(static)
+    for (std::size_t q = 0; q < n_liquid; ++q) {
+      const auto& nodes = mesh_.cell_nodes[liquid.cell[q]];
+      Vec x = Vec::Zero();
+      for (int i = 0; i <= dim; ++i) x += water_.shape[q](i) * mesh_.node_position[nodes[i]];
+      double value = 0;
+      for (int i = 0; i <= dim; ++i) {
+        const std::size_t node = static_cast<std::size_t>(nodes[i]);
+        value += water_.shape[q](i) * nodal[node] *
+                 (node_fit_alpha_[node] + node_fit_beta_[node].dot(x - mesh_.node_position[node]));
+      }
+      smoothed_flux_divergence_[q] = value;
+    }
+    divergence = smoothed_flux_divergence_.data();
+  }
   FirstFault fault;
   double dt_next = next_time_step_;
 #pragma omp parallel for num_threads(threads_) schedule(static) reduction(min : dt_next)
@@ -562,7 +667,7 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
     const double n = std::max(liquid.porosity[q], kMinimumPorosity);
     // Eq. (8), compression positive; no tension (free surface, cavitation).
     double& p = liquid.pressure[q];
-    p = std::max(0.0, p - water.bulk_modulus / n * liquid_flux_divergence_[q] * dt);
+    p = std::max(0.0, p - water.bulk_modulus / n * divergence[q] * dt);
     // Water volume from eq. (7): rho_w = rho_w0 (1 + p / K_w).
     liquid.volume[q] = liquid.mass[q] / (water.liquid_density * (1.0 + p / water.bulk_modulus));
     const double speed = liquid.velocity[q].norm();

@@ -78,6 +78,16 @@ struct Stage {
 
 enum class TransferScheme { kMUSL, kUSL };
 
+// Which pressure the water's nodal force sees (scientific manual 10.4).
+// - kPoints: each liquid point's own pressure (eq. 8 per point), with the periodic L2
+//   pressure projection against the P1/P0 checkerboard. The default.
+// - kNodalFit: the pressure fitted at each node, every step, by a volume-weighted linear
+//   least-squares fit of the point pressures around it (exact for linear fields, so a
+//   hydrostatic state is untouched, at free surfaces too); eq. (8) takes the adjoint
+//   smoothing of the flux divergence, so the pair is energy-consistent and the checkerboard
+//   exerts no force and is not driven. No periodic projection. Experimental (December 2026).
+enum class LiquidPressure { kPoints, kNodalFit };
+
 struct SolverSettings {
   TransferScheme scheme = TransferScheme::kMUSL;
   // FLIP/PIC blend. By default the PIC share is set per unit time, not per step, so that
@@ -110,6 +120,7 @@ struct SolverSettings {
   // each soil node holds no more water than its pore volume (pore_volume_projection.cpp;
   // scientific manual 10.4). A pore can be partly empty (unsaturated), never over-full.
   bool pore_volume_projection = true;
+  LiquidPressure liquid_pressure = LiquidPressure::kPoints;
   // Artificial bulk viscosity of the water (scientific manual 10.5; not in the paper): a
   // viscous pressure -zeta div(v) with zeta = liquid_bulk_viscosity * rho_w c_w h. It acts only
   // on compression, so it damps the sound waves of the weakly compressible water (an artefact

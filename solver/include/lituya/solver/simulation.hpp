@@ -161,7 +161,14 @@ class Simulation {
     std::vector<double> drag;               // sum N V C, C the drag coefficient of eq. (23)
     std::vector<Vec> grain_pressure_force;  // sum p V (1 - n) grad N over the grains
     std::vector<Vec> solid_mass_gradient;   // sum m grad N: points into the soil at its surface
+    std::vector<Vec> water_pressure_force;  // sum V_w (S p) grad N (nodal pressure mode)
+    std::vector<Vec> volume_first_moment, pressure_first_moment;
+    std::vector<Eigen::Matrix<double, dim, dim>> volume_second_moment;
     void assign(std::size_t n) {
+      water_pressure_force.assign(n, Vec::Zero());
+      volume_first_moment.assign(n, Vec::Zero());
+      pressure_first_moment.assign(n, Vec::Zero());
+      volume_second_moment.assign(n, Eigen::Matrix<double, dim, dim>::Zero());
       solid_volume.assign(n, 0.0);
       soil_volume.assign(n, 0.0);
       drag.assign(n, 0.0);
@@ -258,6 +265,10 @@ class Simulation {
   std::vector<Vec> grid_velocity_, grid_liquid_velocity_;  // map_to_grid (output only)
   std::vector<double> node_mesh_volume_;        // integral of N_i over the mesh (lumped volume)
   std::vector<double> liquid_flux_divergence_;  // per liquid point, div((1-n) v_s + n v_w)
+  std::vector<double> smoothed_flux_divergence_;
+  bool nodal_pressure_ = false;
+  std::vector<double> node_fit_alpha_;
+  std::vector<Vec> node_fit_beta_;
   // Per node, dt-independent sponge rate sigma (1/s) of the description's [[sponge]] zones;
   // empty when the case has none, so the nodal update skips it (two_phase.cpp).
   std::vector<double> node_sponge_rate_;
