@@ -326,7 +326,7 @@ void OutputWriter<dim>::write_liquid(const Simulation<dim>& simulation, const Fr
   w.set_vertex_cells();
   w.add_point_data("id", q.id);
   if (wants("velocity")) w.add_point_data("velocity", 3, as_xyz<dim>(q.velocity));
-  if (wants("pressure")) w.add_point_data("pressure", 1, q.pressure);
+  if (wants("pressure")) w.add_point_data("pressure", 1, simulation.acting_liquid_pressure());
   if (wants("porosity")) w.add_point_data("porosity", 1, q.porosity);
   if (wants("mass")) w.add_point_data("mass", 1, q.mass);
   if (wants("volume")) w.add_point_data("volume", 1, q.volume);

@@ -563,13 +563,18 @@ TEST(TwoPhase, GridOutputDoesNotChangeTheRun) {
   EXPECT_EQ(differing, 0u);
 }
 
-TEST(TwoPhase, TwoThreadRunsRepeatBitForBit) {
-  auto run = [] {
+// The same with liquid_pressure = "nodal_fit" (its moment and force sums, and the adjoint
+// divergence, every step).
+class TwoPhaseRepeat : public ::testing::TestWithParam<LiquidPressure> {};
+
+TEST_P(TwoPhaseRepeat, TwoThreadRunsRepeatBitForBit) {
+  auto run = [this] {
     BoxScene<2> s = tank(0.3);
     s.block_min = {0.0, 0.0};  // a saturated soil heap in the corner under water
     s.block_max = {0.3, 0.15};
     s.water_velocity = {0.05, 0.0};
     s.solver.pressure_projection_interval = 2;
+    s.solver.liquid_pressure = GetParam();
     Simulation<2> sim = make_box_simulation<2>(s);
     sim.set_threads(2);
     sim.run_stage(dynamic_stage(0.02), nullptr);
@@ -593,6 +598,9 @@ TEST(TwoPhase, TwoThreadRunsRepeatBitForBit) {
   for (const auto& v : liquid_1.velocity) moved = std::max(moved, v.norm());
   EXPECT_GT(moved, 0.01);  // the water moves: there was something to differ
 }
+
+INSTANTIATE_TEST_SUITE_P(TwoPhase, TwoPhaseRepeat,
+                         ::testing::Values(LiquidPressure::kPoints, LiquidPressure::kNodalFit));
 
 // The pressure projection damps the water a little each time it runs (user manual 2.6), so it
 // runs at fixed simulated times: the Courant number must change the steps, not the number of

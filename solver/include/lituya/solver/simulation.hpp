@@ -130,6 +130,9 @@ class Simulation {
   const std::vector<Vec>& node_liquid_velocity() const { return mean_water_velocity_; }
   const std::vector<double>& node_porosity() const { return node_porosity_; }
   const std::vector<double>& node_pressure() const { return node_pressure_; }
+  // The water pressure the forces act with at each liquid point (two_phase.cpp): the points'
+  // own with liquid_pressure = "points", the nodal fit with "nodal_fit".
+  const std::vector<double>& acting_liquid_pressure() const;
   // Porosity of solid point p: 1 - m / (rho_s V), the Lagrangian form of eq. (5).
   double porosity(std::size_t p) const;
   // Adds a boundary condition built in code (tests of scenes without gmsh groups).
@@ -268,6 +271,7 @@ class Simulation {
   std::vector<double> smoothed_flux_divergence_;
   bool nodal_pressure_ = false;
   std::vector<double> node_fit_alpha_;
+  mutable std::vector<double> acting_pressure_;
   std::vector<Vec> node_fit_beta_;
   // Per node, dt-independent sponge rate sigma (1/s) of the description's [[sponge]] zones;
   // empty when the case has none, so the nodal update skips it (two_phase.cpp).
