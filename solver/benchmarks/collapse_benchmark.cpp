@@ -5,7 +5,8 @@
 // and liquid points both count as points).
 //
 //   lituya_benchmark [--dim 2|3] [--segments 5] [--steps 50] [--threads 1] [--cell 0.005]
-//                    [--water 0|1]
+//                    [--water 0|1] [--nodal-fit 0|1]
+// --nodal-fit 1 runs the water with [solver] liquid_pressure = "nodal_fit".
 #include <omp.h>
 
 #include <algorithm>
@@ -38,7 +39,7 @@ Material sand() {
 }
 
 template <int dim>
-void run(int segments, int steps, int threads, double cell, bool with_water) {
+void run(int segments, int steps, int threads, double cell, bool with_water, bool nodal_fit) {
   const std::size_t memory_before = lituya::current_memory_bytes();
   BoxScene<dim> scene;
   using Vec = Eigen::Matrix<double, dim, 1>;
@@ -57,6 +58,7 @@ void run(int segments, int steps, int threads, double cell, bool with_water) {
     // of the floor is a pool of free water.
     scene.with_water = true;
     scene.water = paper_water();
+    if (nodal_fit) scene.solver.liquid_pressure = LiquidPressure::kNodalFit;
     scene.water_min = Vec::Zero();
     scene.water_max = scene.domain_size;
     scene.water_max(1) = 0.3;
@@ -103,8 +105,8 @@ void run(int segments, int steps, int threads, double cell, bool with_water) {
 int main(int argc, char** argv) {
   const char* usage =
       "usage: lituya_benchmark [--dim 2|3] [--segments 5] [--steps 50] [--threads 1]\n"
-      "                        [--cell 0.005] [--water 0|1]\n";
-  int dim = 2, segments = 5, steps = 50, threads = 1, water = 0;
+      "                        [--cell 0.005] [--water 0|1] [--nodal-fit 0|1]\n";
+  int dim = 2, segments = 5, steps = 50, threads = 1, water = 0, nodal_fit = 0;
   double cell = -1;
   for (int i = 1; i < argc; i += 2) {
     if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
@@ -113,7 +115,8 @@ int main(int argc, char** argv) {
     }
     // Every option takes a value: a lone or unknown flag is a usage error, not a run.
     bool known = false;
-    for (const char* name : {"--dim", "--segments", "--steps", "--threads", "--water", "--cell"})
+    for (const char* name :
+         {"--dim", "--segments", "--steps", "--threads", "--water", "--cell", "--nodal-fit"})
       known = known || !std::strcmp(argv[i], name);
     if (!known) {
       std::fprintf(stderr, "unknown option %s\n%s", argv[i], usage);
@@ -133,12 +136,14 @@ int main(int argc, char** argv) {
       threads = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--water"))
       water = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--nodal-fit"))
+      nodal_fit = std::atoi(argv[i + 1]);
     else
       cell = std::atof(argv[i + 1]);
   }
   if (dim == 2)
-    run<2>(segments, steps, threads, cell > 0 ? cell : 0.005, water != 0);
+    run<2>(segments, steps, threads, cell > 0 ? cell : 0.005, water != 0, nodal_fit != 0);
   else
-    run<3>(segments, steps, threads, cell > 0 ? cell : 0.02, water != 0);
+    run<3>(segments, steps, threads, cell > 0 ? cell : 0.02, water != 0, nodal_fit != 0);
   return 0;
 }

@@ -71,7 +71,8 @@ constexpr FieldNote kLiquidNotes[] = {
     {"velocity", "3", "m/s", "velocity of the water"},
     {"pressure", "1", "Pa",
      "water pressure above the atmosphere's, COMPRESSION POSITIVE, never below 0 (water "
-     "takes no tension)"},
+     "takes no tension); with [solver] liquid_pressure = \"nodal_fit\" the fitted pressure the "
+     "forces act with, which a linear fit can take a little below 0 at a free surface"},
     {"porosity", "1", "-",
      "porosity n the point sees: 1 in free water, that of the soil for pore water"},
     {"mass", "1", "mass", "mass of the water of the point"},

@@ -93,7 +93,8 @@ void pressure_fit_row(double m0, const Eigen::Matrix<double, dim, 1>& m1,
   if (!(m0 > 0)) return;
   const Vec mean = m1 / m0;
   const Mat spread = m2 / m0 - mean * mean.transpose();
-  const Eigen::SelfAdjointEigenSolver<Mat> eig(spread);
+  Eigen::SelfAdjointEigenSolver<Mat> eig;
+  eig.computeDirect(spread, Eigen::EigenvaluesOnly);  // closed form for 2x2 and 3x3
   const double h = smallest_cell_height;
   if (!(eig.eigenvalues().minCoeff() > 0.01 * h * h)) return;
   Eigen::Matrix<double, dim + 1, dim + 1> M;
@@ -101,11 +102,11 @@ void pressure_fit_row(double m0, const Eigen::Matrix<double, dim, 1>& m1,
   M.template block<1, dim>(0, 1) = m1.transpose();
   M.template block<dim, 1>(1, 0) = m1;
   M.template block<dim, dim>(1, 1) = m2;
-  Eigen::Matrix<double, dim + 1, 1> e1 = Eigen::Matrix<double, dim + 1, 1>::Zero();
-  e1(0) = 1;
-  const Eigen::Matrix<double, dim + 1, 1> row = M.ldlt().solve(e1);
-  alpha = row(0);
-  beta = row.template tail<dim>();
+  // M is symmetric: its inverse's first row is its first column. Fixed-size inverses up to
+  // 4x4 are closed-form in Eigen.
+  const Eigen::Matrix<double, dim + 1, dim + 1> inverse = M.inverse();
+  alpha = inverse(0, 0);
+  beta = inverse.template block<dim, 1>(1, 0);
 }
 }  // namespace
 
@@ -260,7 +261,6 @@ void Simulation<dim>::liquid_to_nodes() {
   // projection. A node whose points do not span it (spread below a tenth of the smallest
   // cell height) keeps the plain average.
   if (nodal_pressure_) {
-    using Mat = Eigen::Matrix<double, dim, dim>;
     // Moments of the water volume about each node: w = N_i V, d = x - x_i.
     coupling_.run(
         liquid.size(),
@@ -282,6 +282,7 @@ void Simulation<dim>::liquid_to_nodes() {
     const CouplingSums& m = coupling_.sums();
     node_fit_alpha_.resize(n_nodes);
     node_fit_beta_.resize(n_nodes);
+#pragma omp parallel for num_threads(threads_) schedule(static)
     for (std::size_t i = 0; i < n_nodes; ++i)
       pressure_fit_row<dim>(sums.water_volume[i], m.volume_first_moment[i],
                             m.volume_second_moment[i], smallest_cell_height_, node_fit_alpha_[i],
