@@ -144,6 +144,14 @@ ProbeValues interpolate_probe(const Simulation<dim>& simulation, int cell,
   {
     auto [p, share] = blend([](const NodeSums& s) { return s.liquid_volume; },
                             [](const NodeSums& s, double w) { return s.pressure_volume / w; }, 0.0);
+    // With liquid_pressure = "nodal_fit" the nodes' fitted pressures, the ones the forces act
+    // with (the points' own values carry a part no force feels).
+    if (const std::vector<double>* fitted = simulation.fitted_node_pressure()) {
+      p = 0;
+      for (int j = 0; j <= dim; ++j)
+        if (sums[j].liquid_volume > 0 && shape(j) > 0)
+          p += shape(j) * (*fitted)[static_cast<std::size_t>(probe_nodes[j])];
+    }
     v.pore_pressure = share > 0 ? p / share : kNoValue;
   }
   {
@@ -346,6 +354,13 @@ void ProbeRecorder<dim>::sample(const Simulation<dim>& simulation, Site& site, d
       v.liquid_velocity.setZero();
       v.liquid_velocity.head<dim>() = points.velocity[q];
       v.pore_pressure = points.pressure[q];
+      if (const std::vector<double>* fitted = simulation.fitted_node_pressure()) {
+        const auto& nodes = mesh.cell_nodes[cell];
+        const auto shape = mesh.shape_values(cell, x);
+        v.pore_pressure = 0;
+        for (int j = 0; j <= dim; ++j)
+          v.pore_pressure += shape(j) * (*fitted)[static_cast<std::size_t>(nodes[j])];
+      }
       v.porosity = points.porosity[q];
     }
   }

@@ -282,6 +282,7 @@ void Simulation<dim>::liquid_to_nodes() {
     const CouplingSums& m = coupling_.sums();
     node_fit_alpha_.resize(n_nodes);
     node_fit_beta_.resize(n_nodes);
+    node_fitted_pressure_.resize(n_nodes);
 #pragma omp parallel for num_threads(threads_) schedule(static)
     for (std::size_t i = 0; i < n_nodes; ++i)
       pressure_fit_row<dim>(sums.water_volume[i], m.volume_first_moment[i],
@@ -294,10 +295,13 @@ void Simulation<dim>::liquid_to_nodes() {
     node_pressure_[i] = sums.water_volume[i] > 0 ? sums.water_volume_pressure[i] /
                                                        std::max(sums.water_volume[i], pore_volume)
                                                  : 0.0;
-    if (nodal_pressure_ && sums.water_volume[i] > 0)
-      node_pressure_[i] = (node_fit_alpha_[i] * sums.water_volume_pressure[i] +
-                           node_fit_beta_[i].dot(coupling_.sums().pressure_first_moment[i])) *
-                          std::min(1.0, sums.water_volume[i] / pore_volume);
+    if (nodal_pressure_) {
+      node_fitted_pressure_[i] = node_fit_alpha_[i] * sums.water_volume_pressure[i] +
+                                 node_fit_beta_[i].dot(coupling_.sums().pressure_first_moment[i]);
+      if (sums.water_volume[i] > 0)
+        node_pressure_[i] =
+            node_fitted_pressure_[i] * std::min(1.0, sums.water_volume[i] / pore_volume);
+    }
   }
   coupling_.run(
       points.size(), [](CouplingSums& c) { return std::tie(c.grain_pressure_force); },

@@ -133,6 +133,11 @@ class Simulation {
   // The water pressure the forces act with at each liquid point (two_phase.cpp): the points'
   // own with liquid_pressure = "points", the nodal fit with "nodal_fit".
   const std::vector<double>& acting_liquid_pressure() const;
+  // With liquid_pressure = "nodal_fit", the nodes' fitted water pressures of the last step
+  // (the probes read them); nullptr otherwise, and before the first step.
+  const std::vector<double>* fitted_node_pressure() const {
+    return nodal_pressure_ && !node_fitted_pressure_.empty() ? &node_fitted_pressure_ : nullptr;
+  }
   // Porosity of solid point p: 1 - m / (rho_s V), the Lagrangian form of eq. (5).
   double porosity(std::size_t p) const;
   // Adds a boundary condition built in code (tests of scenes without gmsh groups).
@@ -271,6 +276,7 @@ class Simulation {
   std::vector<double> smoothed_flux_divergence_;
   bool nodal_pressure_ = false;
   std::vector<double> node_fit_alpha_;
+  std::vector<double> node_fitted_pressure_;  // a_i of the fit, nodal_fit only
   mutable std::vector<double> acting_pressure_;
   std::vector<Vec> node_fit_beta_;
   // Per node, dt-independent sponge rate sigma (1/s) of the description's [[sponge]] zones;
