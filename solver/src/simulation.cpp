@@ -144,6 +144,8 @@ void Simulation<dim>::set_threads(int threads) {
     water_.allocate_nodes(threads_, n_nodes);
     coupling_.allocate(threads_, n_nodes);
     projection_.sums.allocate(threads_, n_nodes);
+    if (description_.solver.liquid_pressure == LiquidPressure::kNodalFit)
+      pressure_fit_.allocate(threads_, n_nodes);
   }
 }
 
@@ -446,6 +448,11 @@ std::size_t Simulation<dim>::storage_bytes() const {
                  (3 * sizeof(double) + 2 * sizeof(Vec)) +
              nodes * (2 * sizeof(double) + 4 * sizeof(Vec)) +  // + pore water and mean fields
              mesh_.cell_count() + water_.points.size();        // the pore water flags
+  if (nodal_pressure_)  // the fit's moments and force per thread, its nodal coefficients
+    bytes += static_cast<std::size_t>(pressure_fit_.threads()) * nodes *
+                 (3 * sizeof(Vec) + sizeof(Eigen::Matrix<double, dim, dim>)) +
+             nodes * (2 * sizeof(double) + sizeof(Vec)) +
+             smoothed_flux_divergence_.size() * sizeof(double);
   return bytes;
 }
 

@@ -262,12 +262,12 @@ void Simulation<dim>::liquid_to_nodes() {
   // cell height) keeps the plain average.
   if (nodal_pressure_) {
     // Moments of the water volume about each node: w = N_i V, d = x - x_i.
-    coupling_.run(
+    pressure_fit_.run(
         liquid.size(),
-        [](CouplingSums& c) {
+        [](PressureFitSums& c) {
           return std::tie(c.volume_first_moment, c.pressure_first_moment, c.volume_second_moment);
         },
-        [&](CouplingSums& c, std::size_t q) {
+        [&](PressureFitSums& c, std::size_t q) {
           const auto& nodes = mesh_.cell_nodes[liquid.cell[q]];
           Vec x = Vec::Zero();
           for (int i = 0; i <= dim; ++i) x += water_.shape[q](i) * mesh_.node_position[nodes[i]];
@@ -279,7 +279,7 @@ void Simulation<dim>::liquid_to_nodes() {
             c.volume_second_moment[nodes[i]] += w * d * d.transpose();
           }
         });
-    const CouplingSums& m = coupling_.sums();
+    const PressureFitSums& m = pressure_fit_.sums();
     node_fit_alpha_.resize(n_nodes);
     node_fit_beta_.resize(n_nodes);
     node_fitted_pressure_.resize(n_nodes);
@@ -296,8 +296,9 @@ void Simulation<dim>::liquid_to_nodes() {
                                                        std::max(sums.water_volume[i], pore_volume)
                                                  : 0.0;
     if (nodal_pressure_) {
-      node_fitted_pressure_[i] = node_fit_alpha_[i] * sums.water_volume_pressure[i] +
-                                 node_fit_beta_[i].dot(coupling_.sums().pressure_first_moment[i]);
+      node_fitted_pressure_[i] =
+          node_fit_alpha_[i] * sums.water_volume_pressure[i] +
+          node_fit_beta_[i].dot(pressure_fit_.sums().pressure_first_moment[i]);
       if (sums.water_volume[i] > 0)
         node_pressure_[i] =
             node_fitted_pressure_[i] * std::min(1.0, sums.water_volume[i] / pore_volume);
@@ -318,10 +319,10 @@ void Simulation<dim>::liquid_to_nodes() {
           c.grain_pressure_force[nodes[i]] += pore_pressure * grain_volume * grad[i];
       });
   if (nodal_pressure_) {
-    const CouplingSums& m = coupling_.sums();
-    coupling_.run(
-        liquid.size(), [](CouplingSums& c) { return std::tie(c.water_pressure_force); },
-        [&](CouplingSums& c, std::size_t q) {
+    const PressureFitSums& m = pressure_fit_.sums();
+    pressure_fit_.run(
+        liquid.size(), [](PressureFitSums& c) { return std::tie(c.water_pressure_force); },
+        [&](PressureFitSums& c, std::size_t q) {
           const int cell = liquid.cell[q];
           const auto& nodes = mesh_.cell_nodes[cell];
           const auto& grad = mesh_.cell_shape_gradient[cell];
@@ -418,9 +419,9 @@ void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
         velocity_from_momentum(Vec(liquid.momentum[i] - liquid.pore_momentum[i]), mf);
     const Vec vp_old = velocity_from_momentum(liquid.pore_momentum[i], mp);
     // Eqs. (15), (16): the pore-pressure force shared by the volumes the phases fill.
-    const Vec pressure_force =
-        (nodal_pressure_ ? coupling.water_pressure_force[i] : liquid.pressure_force[i]) +
-        coupling.grain_pressure_force[i];
+    const Vec pressure_force = (nodal_pressure_ ? pressure_fit_.sums().water_pressure_force[i]
+                                                : liquid.pressure_force[i]) +
+                               coupling.grain_pressure_force[i];
     const double water_share = pore_pressure_water_share(i);
     const Vec water_force = water_share * pressure_force;
     // The water's share goes to its two fields by mass (one pressure per node, one
@@ -557,7 +558,7 @@ typename Simulation<dim>::Vec Simulation<dim>::wall_pore_pressure_push(int node,
   const double wet_volume =
       std::min(node_mesh_volume_[node], water_.nodal.sums().water_volume[node] / n);
   const Vec gradient_load = materials_[pore_liquid_].liquid_density * wet_volume * gravity_;
-  const Vec wall = (nodal_pressure_ ? coupling_.sums().water_pressure_force[node]
+  const Vec wall = (nodal_pressure_ ? pressure_fit_.sums().water_pressure_force[node]
                                     : water_.nodal.sums().pressure_force[node]) +
                    coupling_.sums().grain_pressure_force[node] + gradient_load;
   // The grains' share of the pore-pressure force, as in two_phase_nodal_update: the push must
@@ -663,13 +664,13 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
   const double* divergence = liquid_flux_divergence_.data();
   if (nodal_pressure_) {
     const std::vector<double>& nodal = scatter_liquid(liquid_flux_divergence_);
+    const std::vector<double>& volume = water_.nodal.sums().water_volume;
 #pragma omp parallel for num_threads(threads_) schedule(static)
     for (std::size_t q = 0; q < n_liquid; ++q) {
       const auto& nodes = mesh_.cell_nodes[liquid.cell[q]];
       Vec x = Vec::Zero();
       for (int i = 0; i <= dim; ++i) x += water_.shape[q](i) * mesh_.node_position[nodes[i]];
       double value = 0, unit = 0;
-      const std::vector<double>& volume = water_.nodal.sums().water_volume;
       for (int i = 0; i <= dim; ++i) {
         const std::size_t node = static_cast<std::size_t>(nodes[i]);
         const double weight =

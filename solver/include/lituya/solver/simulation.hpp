@@ -169,14 +169,7 @@ class Simulation {
     std::vector<double> drag;               // sum N V C, C the drag coefficient of eq. (23)
     std::vector<Vec> grain_pressure_force;  // sum p V (1 - n) grad N over the grains
     std::vector<Vec> solid_mass_gradient;   // sum m grad N: points into the soil at its surface
-    std::vector<Vec> water_pressure_force;  // sum V_w (S p) grad N (nodal pressure mode)
-    std::vector<Vec> volume_first_moment, pressure_first_moment;
-    std::vector<Eigen::Matrix<double, dim, dim>> volume_second_moment;
     void assign(std::size_t n) {
-      water_pressure_force.assign(n, Vec::Zero());
-      volume_first_moment.assign(n, Vec::Zero());
-      pressure_first_moment.assign(n, Vec::Zero());
-      volume_second_moment.assign(n, Eigen::Matrix<double, dim, dim>::Zero());
       solid_volume.assign(n, 0.0);
       soil_volume.assign(n, 0.0);
       drag.assign(n, 0.0);
@@ -257,6 +250,21 @@ class Simulation {
   bool has_liquid_ = false;
   LiquidPhase water_;
   detail::NodalScatter<CouplingSums> coupling_;
+  // Sums of liquid_pressure = "nodal_fit" (two_phase.cpp): the water volume's moments about
+  // each node and the water's force from the fitted pressure. Allocated only in that mode.
+  struct PressureFitSums {
+    std::vector<Vec> volume_first_moment;                               // sum N V (x - x_i)
+    std::vector<Vec> pressure_first_moment;                             // sum N V (x - x_i) p
+    std::vector<Eigen::Matrix<double, dim, dim>> volume_second_moment;  // sum N V d d^T
+    std::vector<Vec> water_pressure_force;                              // sum V (S p) grad N
+    void assign(std::size_t n) {
+      volume_first_moment.assign(n, Vec::Zero());
+      pressure_first_moment.assign(n, Vec::Zero());
+      volume_second_moment.assign(n, Eigen::Matrix<double, dim, dim>::Zero());
+      water_pressure_force.assign(n, Vec::Zero());
+    }
+  };
+  detail::NodalScatter<PressureFitSums> pressure_fit_;
   std::vector<double> node_porosity_;
   std::vector<double> node_pressure_;  // volume-weighted nodal liquid pressure
   // Two velocity fields of the water at the nodes (two_phase.cpp): the free water's is
