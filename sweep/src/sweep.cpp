@@ -33,6 +33,7 @@
 #include "lituya/solver/case_description.hpp"
 #include "lituya/solver/checkpoint.hpp"
 #include "lituya/solver/solve.hpp"
+#include "lituya/sweep/convergence.hpp"
 #include "lituya/sweep/measures.hpp"
 #include "lituya/sweep/progress.hpp"
 #include "lituya/sweep/scene_edit.hpp"
@@ -169,7 +170,8 @@ void write_table(const fs::path& file, const SweepResult& result) {
 }
 
 // sweep.json: the sweep and every run, machine-readable, each number as the run gave it.
-void write_summary(const SweepResult& result, const SweepDefinition& definition) {
+void write_summary(const SweepResult& result, const SweepDefinition& definition,
+                   const std::vector<MeshConvergenceRow>& convergence) {
   Json runs = Json::array();
   for (const RunRecord& r : result.runs) {
     Json values = Json::object(), measures = Json::object();
@@ -187,17 +189,36 @@ void write_summary(const SweepResult& result, const SweepDefinition& definition)
                     {"reused_stages", r.reused_stages},
                     {"message", r.message}});
   }
-  const Json summary = {{"format", "lituya-sweep-summary"},
-                        {"version", 1},
-                        {"lituya_version", lituya_version()},
-                        {"commit", lituya_commit()},
-                        {"date", utc_now_iso8601()},
-                        {"scene", fs::absolute(definition.scene).lexically_normal().string()},
-                        {"parameters", result.parameters},
-                        {"combine", combination_name(result.combination)},
-                        {"measures", result.measures},
-                        {"all_ok", result.all_ok()},
-                        {"runs", runs}};
+  Json summary = {{"format", "lituya-sweep-summary"},
+                  {"version", 1},
+                  {"lituya_version", lituya_version()},
+                  {"commit", lituya_commit()},
+                  {"date", utc_now_iso8601()},
+                  {"scene", fs::absolute(definition.scene).lexically_normal().string()},
+                  {"parameters", result.parameters},
+                  {"combine", combination_name(result.combination)},
+                  {"measures", result.measures},
+                  {"all_ok", result.all_ok()},
+                  {"runs", runs}};
+  if (!convergence.empty()) {
+    Json rows = Json::array();
+    for (const MeshConvergenceRow& row : convergence) {
+      const RichardsonEstimate& e = row.estimate;
+      rows.push_back(
+          {{"group", row.group},
+           {"measure", row.measure},
+           {"runs", row.runs},
+           {"cell_sizes", e.cell_size},
+           {"values", {json_number(e.value[0]), json_number(e.value[1]), json_number(e.value[2])}},
+           {"change_fine", json_number(e.change_fine)},
+           {"behaviour", behaviour_text(e.behaviour)},
+           {"observed_order", json_number(e.order)},
+           {"extrapolated", json_number(e.extrapolated)},
+           {"gci_fine", json_number(e.gci_fine)},
+           {"note", e.note}});
+    }
+    summary["mesh_convergence"] = rows;
+  }
   write_json_file(result.summary, summary);
 }
 
@@ -981,7 +1002,16 @@ SweepResult run_sweep(const SweepDefinition& definition, const SweepOptions& opt
   }
   progress.finish();
 
-  write_summary(result, definition);
+  const std::vector<MeshConvergenceRow> convergence = mesh_convergence(result);
+  if (!convergence.empty()) {
+    result.convergence = result.folder / "convergence.csv";
+    write_convergence_table(result.convergence, convergence);
+  } else {
+    // An earlier sweep in this folder (--force) may have left one that is not of this sweep.
+    std::error_code ignored;
+    fs::remove(result.folder / "convergence.csv", ignored);
+  }
+  write_summary(result, definition, convergence);
   result.plotted = write_plot(result, definition, numeric_parameter);
   if (options.report) {
     std::string keys;
@@ -1000,9 +1030,12 @@ SweepResult run_sweep(const SweepDefinition& definition, const SweepOptions& opt
       *options.report << reused << " of " << count
                       << " runs started from the end of stages they share with another run "
                          "(--no-reuse runs every run whole)\n";
+    *options.report << format_convergence(convergence);
     *options.report << "table: " << result.table.string() << "\n"
                     << "json:  " << result.summary.string() << "\n";
     if (result.plotted) *options.report << "plot:  " << result.plot.string() << "\n";
+    if (!result.convergence.empty())
+      *options.report << "mesh convergence: " << result.convergence.string() << "\n";
     *options.report << "runs:  " << result.folder.string()
                     << "/run_*/ (scene.toml, run.json, and the case in case/)\n";
   }

@@ -32,6 +32,36 @@ std::vector<std::vector<std::string>> read_rows(const fs::path& csv) {
   return rows;
 }
 
+// A sweep of the cell size writes the convergence table (convergence.hpp) from the runs'
+// measures: the three finest of four sizes, fine first, the same numbers as sweep.csv.
+TEST(Sweep, CellSizeSweepWritesTheMeshConvergenceTable) {
+  const fs::path folder = fs::temp_directory_path() / "lituya_sweep_convergence";
+  fs::remove_all(folder);
+  SweepDefinition d;
+  d.scene = kScene;
+  d.parameters = {{"mesh.cell_size", {"0.025", "0.0125", "0.03", "0.02"}}};
+  d.measures = {"front_travel_final"};
+  d.output = folder;
+  std::ostringstream report;
+  SweepOptions options;
+  options.report = &report;
+  const SweepResult result = run_sweep(d, options);
+  ASSERT_TRUE(result.all_ok());
+  ASSERT_EQ(result.convergence, folder / "convergence.csv");
+  const std::vector<std::vector<std::string>> rows = read_rows(result.convergence);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1][1], "front_travel_final");
+  EXPECT_EQ(rows[1][2], "2 4 1");  // 0.0125, 0.02, 0.025
+  EXPECT_DOUBLE_EQ(std::stod(rows[1][3]), 0.0125);
+  EXPECT_DOUBLE_EQ(std::stod(rows[1][5]), 0.025);
+  EXPECT_DOUBLE_EQ(std::stod(rows[1][6]), result.runs[1].measures[0]);
+  EXPECT_DOUBLE_EQ(std::stod(rows[1][8]), result.runs[0].measures[0]);
+  EXPECT_NE(report.str().find("mesh convergence"), std::string::npos) << report.str();
+  nlohmann::json summary;
+  std::ifstream(folder / "sweep.json") >> summary;
+  EXPECT_EQ(summary["mesh_convergence"].size(), 1u);
+}
+
 // A dry granular column collapse (about 1 s a run) swept over its friction angle: a lower
 // angle runs out further. 95 degrees is not a valid angle: that run fails, the others go on.
 TEST(Sweep, FrictionAngleOfAColumnCollapse) {

@@ -9,6 +9,8 @@
 // message and the sweep goes on with the next. At the end: DIR/sweep.csv (one row per run),
 // DIR/sweep.json (the same, machine-readable, every number exact), DIR/sweep.png (each measure
 // against the first parameter) and DIR/sweep.toml (the sweep's definition, to run it again).
+// A sweep over `mesh.cell_size` also writes DIR/convergence.csv: each measure's Richardson
+// estimate from its three finest cell sizes (convergence.hpp).
 //
 // Runs go one after another, or `jobs` at a time, each in a process of its own (fork): gmsh is
 // one instance per process and not thread-safe, and a run that crashes then takes only itself
@@ -86,6 +88,9 @@ struct SweepResult {
   std::vector<RunRecord> runs;
   std::filesystem::path folder, table, summary, plot;  // DIR, sweep.csv, sweep.json, sweep.png
   bool plotted = false;                                // false when gnuplot is missing or failed
+  // DIR/convergence.csv (convergence.hpp) when the sweep varies `mesh.cell_size` over at least
+  // three sizes that finished; empty otherwise.
+  std::filesystem::path convergence;
   bool all_ok() const;
 };
 

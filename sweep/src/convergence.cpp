@@ -1,0 +1,248 @@
+// Mesh convergence of a sweep's measures (convergence.hpp says why and how).
+#include "lituya/sweep/convergence.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "lituya/common/csv_writer.hpp"
+#include "lituya/sweep/measures.hpp"
+#include "lituya/sweep/sweep.hpp"
+
+namespace lituya::sweep {
+
+namespace {
+
+constexpr const char* kCellSizeKey = "mesh.cell_size";
+// Above this observed order the three values are not in the asymptotic range of a scheme
+// with linear shape functions (formal order at most 2): they level off by chance, or the
+// coarsest is too coarse.
+constexpr double kHighestPlausibleOrder = 3.0;
+
+// The observed order for 0 < e21 / e32 < 1 by the fixed-point iteration of Celik et al.
+// (2008), eq. (3): p ln r21 = |ln|e32 / e21| + q(p)|, q(p) = ln((r21^p - 1) / (r32^p - 1)).
+// NaN when it does not settle.
+double observed_order(double r21, double r32, double ratio) {
+  const double log_ratio = std::log(std::abs(ratio));  // ln|e32 / e21| > 0
+  double p = log_ratio / std::log(r21);
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double q = std::log((std::pow(r21, p) - 1.0) / (std::pow(r32, p) - 1.0));
+    const double next = std::abs(log_ratio + q) / std::log(r21);
+    if (!std::isfinite(next)) return NAN;
+    if (std::abs(next - p) <= 1e-12 * std::max(1.0, next)) return next;
+    p = next;
+  }
+  return NAN;
+}
+
+std::string percent(double fraction) {
+  if (!std::isfinite(fraction)) return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%+.1f %%", 100.0 * fraction);
+  return text;
+}
+
+// The grid convergence index, to two significant digits (it may be a small fraction of 1 %).
+std::string gci_percent(double fraction) {
+  if (!std::isfinite(fraction)) return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g %%", 100.0 * fraction);
+  return text;
+}
+
+std::string number(double v) {
+  if (!std::isfinite(v)) return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+
+}  // namespace
+
+std::string behaviour_text(ConvergenceBehaviour behaviour) {
+  switch (behaviour) {
+    case ConvergenceBehaviour::kUnchanged:
+      return "unchanged";
+    case ConvergenceBehaviour::kMonotone:
+      return "monotone";
+    case ConvergenceBehaviour::kOscillatory:
+      return "oscillatory";
+    case ConvergenceBehaviour::kNotConverging:
+      return "not converging";
+  }
+  return "";
+}
+
+RichardsonEstimate richardson_estimate(const std::array<double, 3>& cell_size,
+                                       const std::array<double, 3>& value) {
+  std::array<int, 3> order{0, 1, 2};
+  for (int k = 0; k < 3; ++k) {
+    if (!(cell_size[k] > 0) || !std::isfinite(cell_size[k]))
+      throw std::invalid_argument("a cell size must be positive and finite");
+    if (!std::isfinite(value[k])) throw std::invalid_argument("a value must be finite");
+  }
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return cell_size[a] < cell_size[b]; });
+  RichardsonEstimate e;
+  for (int k = 0; k < 3; ++k) {
+    e.cell_size[k] = cell_size[order[k]];
+    e.value[k] = value[order[k]];
+  }
+  if (e.cell_size[0] == e.cell_size[1] || e.cell_size[1] == e.cell_size[2])
+    throw std::invalid_argument("the three cell sizes must differ");
+  const auto [f1, f2, f3] = e.value;
+  const double r21 = e.cell_size[1] / e.cell_size[0], r32 = e.cell_size[2] / e.cell_size[1];
+  const double e21 = f2 - f1, e32 = f3 - f2;
+  e.change_fine = f2 != 0 ? (f1 - f2) / std::abs(f2) : (f1 == f2 ? 0.0 : NAN);
+  e.order = e.extrapolated = e.gci_fine = NAN;
+  if (e21 == 0 && e32 == 0) {
+    e.behaviour = ConvergenceBehaviour::kUnchanged;
+    e.extrapolated = f1;
+    e.gci_fine = 0;
+    return e;
+  }
+  const double ratio = e32 != 0 ? e21 / e32 : INFINITY;  // R of the header
+  if (ratio < 0) {
+    e.behaviour = ConvergenceBehaviour::kOscillatory;
+    e.note = "the changes alternate in sign: no order or extrapolation; refine further";
+    return e;
+  }
+  if (!(ratio < 1)) {
+    e.behaviour = ConvergenceBehaviour::kNotConverging;
+    e.note = "the finest step changed the value at least as much as the one before";
+    return e;
+  }
+  e.behaviour = ConvergenceBehaviour::kMonotone;
+  if (e21 == 0) {  // the two finest agree exactly: settled, order unbounded
+    e.extrapolated = f1;
+    e.gci_fine = 0;
+    e.note = "the two finest values are equal";
+    return e;
+  }
+  e.order = observed_order(r21, r32, e32 / e21);
+  if (!std::isfinite(e.order)) {
+    e.note = "the observed order could not be found";
+    return e;
+  }
+  const double growth = std::pow(r21, e.order);
+  e.extrapolated = (growth * f1 - f2) / (growth - 1.0);
+  e.gci_fine = f1 != 0 ? 1.25 * std::abs((f1 - f2) / f1) / (growth - 1.0) : NAN;
+  if (e.order > kHighestPlausibleOrder)
+    e.note = "order above 3: not in the asymptotic range, read as levelling off, not as a limit";
+  return e;
+}
+
+std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result) {
+  const auto key = std::find(result.parameters.begin(), result.parameters.end(), kCellSizeKey);
+  if (key == result.parameters.end()) return {};
+  const std::size_t cell_key = static_cast<std::size_t>(key - result.parameters.begin());
+  // Runs grouped by the values of the other parameters, in the order they first appear.
+  std::vector<std::string> group_order;
+  std::map<std::string, std::vector<const RunRecord*>> groups;
+  for (const RunRecord& run : result.runs) {
+    if (run.status != RunStatus::kOk) continue;
+    std::string group;
+    for (std::size_t p = 0; p < run.values.size(); ++p)
+      if (p != cell_key)
+        group += (group.empty() ? "" : " ") + result.labels[p] + "=" + run.values[p];
+    if (!groups.count(group)) group_order.push_back(group);
+    groups[group].push_back(&run);
+  }
+  std::vector<MeshConvergenceRow> rows;
+  for (const std::string& group : group_order) {
+    for (std::size_t m = 0; m < result.measures.size(); ++m) {
+      // The finest run of each distinct cell size with a value (the first such run where a
+      // size appears twice).
+      std::map<double, const RunRecord*> by_size;
+      for (const RunRecord* run : groups[group]) {
+        double h = NAN;
+        try {
+          std::size_t used = 0;
+          h = std::stod(run->values[cell_key], &used);
+          if (used != run->values[cell_key].size()) h = NAN;
+        } catch (const std::exception&) {
+        }
+        if (!(h > 0) || !std::isfinite(run->measures[m])) continue;
+        by_size.emplace(h, run);
+      }
+      if (by_size.size() < 3) continue;
+      MeshConvergenceRow row;
+      row.group = group;
+      row.measure = result.measures[m];
+      std::array<double, 3> h{}, f{};
+      auto it = by_size.begin();
+      for (int k = 0; k < 3; ++k, ++it) {
+        h[k] = it->first;
+        f[k] = it->second->measures[m];
+        row.runs[k] = it->second->number;
+      }
+      row.estimate = richardson_estimate(h, f);
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
+void write_convergence_table(const std::filesystem::path& file,
+                             const std::vector<MeshConvergenceRow>& rows) {
+  CsvWriter table({"group", "measure", "runs", "h_fine", "h_medium", "h_coarse", "value_fine",
+                   "value_medium", "value_coarse", "change_fine", "behaviour", "observed_order",
+                   "extrapolated", "gci_fine", "note"});
+  for (const MeshConvergenceRow& row : rows) {
+    const RichardsonEstimate& e = row.estimate;
+    table.text(row.group).text(row.measure);
+    table.text(std::to_string(row.runs[0]) + " " + std::to_string(row.runs[1]) + " " +
+               std::to_string(row.runs[2]));
+    for (double h : e.cell_size) table.number(h);
+    for (double f : e.value) table.number(f);
+    table.number(e.change_fine).text(behaviour_text(e.behaviour));
+    table.number(e.order).number(e.extrapolated).number(e.gci_fine).text(e.note);
+    table.end_row();
+  }
+  table.write(file);
+}
+
+std::string format_convergence(const std::vector<MeshConvergenceRow>& rows) {
+  if (rows.empty()) return "";
+  std::vector<std::vector<std::string>> lines{{"measure", "cell sizes (m)", "values", "last change",
+                                               "behaviour", "order", "extrapolated", "GCI"}};
+  const bool grouped = std::any_of(rows.begin(), rows.end(),
+                                   [](const MeshConvergenceRow& r) { return !r.group.empty(); });
+  if (grouped) lines[0].insert(lines[0].begin(), "with");
+  for (const MeshConvergenceRow& row : rows) {
+    const RichardsonEstimate& e = row.estimate;
+    std::vector<std::string> line{
+        row.measure + " (" + measure_unit(row.measure) + ")",
+        number(e.cell_size[0]) + " " + number(e.cell_size[1]) + " " + number(e.cell_size[2]),
+        number(e.value[0]) + " " + number(e.value[1]) + " " + number(e.value[2]),
+        percent(e.change_fine),
+        behaviour_text(e.behaviour),
+        number(e.order),
+        number(e.extrapolated),
+        gci_percent(e.gci_fine)};
+    if (grouped) line.insert(line.begin(), row.group.empty() ? "-" : row.group);
+    lines.push_back(line);
+  }
+  std::vector<std::size_t> width(lines[0].size(), 0);
+  for (const auto& line : lines)
+    for (std::size_t c = 0; c < line.size(); ++c) width[c] = std::max(width[c], line[c].size());
+  std::ostringstream out;
+  out << "mesh convergence (three finest cell sizes, fine first; Richardson extrapolation and "
+         "grid convergence index after Celik et al. 2008):\n";
+  for (const auto& line : lines) {
+    std::string text;
+    for (std::size_t c = 0; c < line.size(); ++c)
+      text +=
+          c + 1 < line.size() ? line[c] + std::string(width[c] - line[c].size() + 2, ' ') : line[c];
+    out << text << "\n";
+  }
+  for (const MeshConvergenceRow& row : rows)
+    if (!row.estimate.note.empty())
+      out << row.measure << (row.group.empty() ? "" : " (" + row.group + ")") << ": "
+          << row.estimate.note << "\n";
+  return out.str();
+}
+
+}  // namespace lituya::sweep
