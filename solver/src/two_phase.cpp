@@ -319,7 +319,6 @@ void Simulation<dim>::liquid_to_nodes() {
           c.grain_pressure_force[nodes[i]] += pore_pressure * grain_volume * grad[i];
       });
   if (nodal_pressure_) {
-    const PressureFitSums& m = pressure_fit_.sums();
     pressure_fit_.run(
         liquid.size(), [](PressureFitSums& c) { return std::tie(c.water_pressure_force); },
         [&](PressureFitSums& c, std::size_t q) {
@@ -327,12 +326,8 @@ void Simulation<dim>::liquid_to_nodes() {
           const auto& nodes = mesh_.cell_nodes[cell];
           const auto& grad = mesh_.cell_shape_gradient[cell];
           double smoothed = 0;
-          for (int i = 0; i <= dim; ++i) {
-            const std::size_t node = static_cast<std::size_t>(nodes[i]);
-            smoothed +=
-                water_.shape[q](i) * (node_fit_alpha_[node] * sums.water_volume_pressure[node] +
-                                      node_fit_beta_[node].dot(m.pressure_first_moment[node]));
-          }
+          for (int i = 0; i <= dim; ++i)
+            smoothed += water_.shape[q](i) * node_fitted_pressure_[nodes[i]];
           const double w = smoothed * liquid.volume[q];
           for (int i = 0; i <= dim; ++i) c.water_pressure_force[nodes[i]] += w * grad[i];
         });
@@ -735,7 +730,10 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
 // The water pressure the forces act with, at the points' current positions: each point's own
 // with liquid_pressure = "points"; with "nodal_fit" the nodal fit interpolated to the point
 // (liquid_to_nodes), which is what the output reports, since the points' own values then carry
-// a part that no force feels.
+// a part that no force feels. Refitted here from the points' state rather than taken from the
+// last step's nodal fit (as the probes do): the output is then a function of the state alone, so
+// a stage started from a checkpoint writes the same first frame as the whole run. Called once
+// per output, so its serial pass and nodal scratch cost nothing per step.
 template <int dim>
 const std::vector<double>& Simulation<dim>::acting_liquid_pressure() const {
   const LiquidPoints<dim>& liquid = water_.points;

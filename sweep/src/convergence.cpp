@@ -10,6 +10,7 @@
 
 #include "lituya/common/csv_writer.hpp"
 #include "lituya/sweep/measures.hpp"
+#include "lituya/sweep/progress.hpp"
 #include "lituya/sweep/sweep.hpp"
 
 namespace lituya::sweep {
@@ -50,13 +51,6 @@ std::string gci_percent(double fraction) {
   if (!std::isfinite(fraction)) return "-";
   char text[32];
   std::snprintf(text, sizeof text, "%.2g %%", 100.0 * fraction);
-  return text;
-}
-
-std::string number(double v) {
-  if (!std::isfinite(v)) return "-";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", v);
   return text;
 }
 
@@ -215,29 +209,21 @@ std::string format_convergence(const std::vector<MeshConvergenceRow>& rows) {
     const RichardsonEstimate& e = row.estimate;
     std::vector<std::string> line{
         row.measure + " (" + measure_unit(row.measure) + ")",
-        number(e.cell_size[0]) + " " + number(e.cell_size[1]) + " " + number(e.cell_size[2]),
-        number(e.value[0]) + " " + number(e.value[1]) + " " + number(e.value[2]),
+        short_number(e.cell_size[0]) + " " + short_number(e.cell_size[1]) + " " +
+            short_number(e.cell_size[2]),
+        short_number(e.value[0]) + " " + short_number(e.value[1]) + " " + short_number(e.value[2]),
         percent(e.change_fine),
         behaviour_text(e.behaviour),
-        number(e.order),
-        number(e.extrapolated),
+        short_number(e.order),
+        short_number(e.extrapolated),
         gci_percent(e.gci_fine)};
     if (grouped) line.insert(line.begin(), row.group.empty() ? "-" : row.group);
     lines.push_back(line);
   }
-  std::vector<std::size_t> width(lines[0].size(), 0);
-  for (const auto& line : lines)
-    for (std::size_t c = 0; c < line.size(); ++c) width[c] = std::max(width[c], line[c].size());
   std::ostringstream out;
   out << "mesh convergence (three finest cell sizes, fine first; Richardson extrapolation and "
-         "grid convergence index after Celik et al. 2008):\n";
-  for (const auto& line : lines) {
-    std::string text;
-    for (std::size_t c = 0; c < line.size(); ++c)
-      text +=
-          c + 1 < line.size() ? line[c] + std::string(width[c] - line[c].size() + 2, ' ') : line[c];
-    out << text << "\n";
-  }
+         "grid convergence index after Celik et al. 2008):\n"
+      << align_columns(lines);
   for (const MeshConvergenceRow& row : rows)
     if (!row.estimate.note.empty())
       out << row.measure << (row.group.empty() ? "" : " (" + row.group + ")") << ": "

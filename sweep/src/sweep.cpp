@@ -64,13 +64,6 @@ std::string replace_all(std::string text, const std::string& from, const std::st
   return text;
 }
 
-std::string short_number(double v) {
-  if (!std::isfinite(v)) return "-";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", v);
-  return text;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -750,19 +743,8 @@ std::string format_table(const SweepResult& result) {
     row.push_back(status_text(r.status) + (r.kept ? " (kept)" : ""));
     rows.push_back(row);
   }
-  std::vector<size_t> width(header.size(), 0);
-  for (const auto& row : rows)
-    for (size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
   std::ostringstream out;
-  for (const auto& row : rows) {
-    std::string line;
-    for (size_t c = 0; c < row.size(); ++c) {
-      std::string cell = row[c];
-      if (c + 1 < row.size()) cell += std::string(width[c] - cell.size() + 2, ' ');
-      line += cell;
-    }
-    out << line << "\n";
-  }
+  out << align_columns(rows);
   for (const RunRecord& r : result.runs)
     if (r.status != RunStatus::kOk)
       out << "run " << r.number << " (" << r.label(result.labels) << "): " << r.message << "\n";

@@ -21,6 +21,13 @@ std::string format_duration(double seconds);
 // "[########............]": `done` of `total` filled, `width` characters inside.
 std::string progress_bar(int done, int total, int width = 20);
 
+// A number for a printed table: four significant digits, "-" for NaN or infinity.
+std::string short_number(double v);
+
+// Rows of cells as lines of left-aligned columns two spaces apart (the last column unpadded),
+// each line ending in a newline: the sweep's printed tables.
+std::string align_columns(const std::vector<std::vector<std::string>>& rows);
+
 class SweepProgress {
  public:
   // `out` may be nullptr (no output). `terminal`: redraw the line in place. `jobs`: how many
