@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <random>
 #include <tuple>
@@ -391,13 +392,17 @@ TEST(TwoPhase, WaterTableInsideASoilStaysPut) {
 // along the bed (a roller for the liquid phase). The layer first settles on a glued bed, so
 // that the release starts from equilibrium stresses. Returns the mean along-slope speed of
 // the solid after `time` (saturated_layer_speed) or the simulation (slide_saturated_layer).
-Simulation<2> slide_saturated_layer(double theta_deg, double mu, double time) {
+// The layer settled on its glued bed, with the bed ready to become a `contact` wall of
+// friction mu ("bed", solid) and a roller ("bed_water", liquid). projection_interval: the
+// pressure projection every that many steps (0: off; unset: the default period).
+Simulation<2> settled_saturated_layer(double theta_deg, double mu, double grain_diameter = 1e-4,
+                                      std::optional<int> projection_interval = std::nullopt) {
   BoxScene<2> s;
   s.domain_size = {2.0, 0.3};
   s.cells = {80, 12};
   s.block_min = {0.3, 0.0};
   s.block_max = {1.3, 0.1};
-  s.material = soil(1e-4);
+  s.material = soil(grain_diameter);
   s.material.youngs_modulus = 5e7;
   const double theta = theta_deg * std::acos(-1.0) / 180;
   s.gravity = {9.81 * std::sin(theta), -9.81 * std::cos(theta)};
@@ -405,6 +410,7 @@ Simulation<2> slide_saturated_layer(double theta_deg, double mu, double time) {
   s.water = paper_water();
   s.water_min = s.block_min;
   s.water_max = s.block_max;
+  s.solver.pressure_projection_interval = projection_interval;
   BoundaryCondition glued = box_condition(BoundaryType::kFixed);
   glued.name = "glued";
   BoundaryCondition bed = box_condition(BoundaryType::kContact, mu);
@@ -418,9 +424,18 @@ Simulation<2> slide_saturated_layer(double theta_deg, double mu, double time) {
   // The box scene's hydrostatic pressure uses |g|; the slope's is rho_w g cos(theta) depth.
   for (double& p : sim.liquid().pressure) p *= std::cos(theta);
   sim.run_stage(settling_stage(0.5, 1e-6, {"glued"}), nullptr);
+  return sim;
+}
+
+Stage slide_stage(double time) {
   Stage slide = dynamic_stage(time);
   slide.boundaries = {"bed", "bed_water"};
-  sim.run_stage(slide, nullptr);
+  return slide;
+}
+
+Simulation<2> slide_saturated_layer(double theta_deg, double mu, double time) {
+  Simulation<2> sim = settled_saturated_layer(theta_deg, mu);
+  sim.run_stage(slide_stage(time), nullptr);
   return sim;
 }
 
@@ -508,6 +523,60 @@ TEST(TwoPhase, SaturatedLayerStaysPutBelowTheEffectiveStressFrictionAngle) {
   // layer (1 % of the 0.34 m/s it would reach in 0.2 s without friction). Taking the pore
   // pressure out of the friction must not take too much.
   EXPECT_NEAR(saturated_layer_speed(10, 0.5, 0.2), 0.0, 0.0034);
+}
+
+// The settled layer on a level, frictionless bed, given a uniform speed along the bed: a rigid
+// translation, which cannot change any pressure (Galilean invariance). Returns the mean pore
+// pressure of its liquid points over 0.2 s, sampled every 2 ms.
+double translating_layer_pore_pressure(double grain_diameter, double speed,
+                                       std::optional<int> projection_interval = std::nullopt) {
+  Simulation<2> sim = settled_saturated_layer(0, 0.0, grain_diameter, projection_interval);
+  for (auto& v : sim.points().velocity) v(0) = speed;
+  for (auto& v : sim.liquid().velocity) v(0) = speed;
+  double sum = 0, next = 0;
+  int samples = 0;
+  sim.run_stage(slide_stage(0.2), nullptr, [&](const Stage&, const StageProgress& at) {
+    if (at.time < next) return;
+    const auto& pressure = sim.liquid().pressure;
+    double mean = 0;
+    for (double p : pressure) mean += p;
+    sum += mean / static_cast<double>(pressure.size());
+    ++samples;
+    next += 2e-3;
+  });
+  return sum / samples;
+}
+
+TEST(TwoPhase, TranslatingCoarseSaturatedLayerKeepsItsPorePressure) {
+  // Reference: the same layer at rest (its mean pore pressure is below the hydrostatic
+  // 490.5 Pa because its free ends drain: 433 Pa). Tolerance 5 %: both are time means of a
+  // pressure that swings by about 10 % while the released layer rings. Coarse sand (1 mm):
+  // its pore pressure rebuilds by seepage within about 0.3 ms, so what the moving points do
+  // to it is undone at once. Measured (December 2026): 444 against 433 Pa (+2.5 %). The fine
+  // sand of the tests above (0.1 mm) fails this by far: 286 against 424 Pa at 0.5 m/s, the
+  // pore pressure loss behind the excess friction of SaturatedLayerSlidesAtTheEffective
+  // StressFriction (DISABLED_TranslatingSaturatedLayerPorePressureTable, and
+  // verification/saturated_block_fine/known-failure.md).
+  const double at_rest = translating_layer_pore_pressure(1e-3, 0.0);
+  const double moving = translating_layer_pore_pressure(1e-3, 0.5);
+  EXPECT_NEAR(moving / at_rest, 1.0, 0.05);
+}
+
+TEST(TwoPhase, DISABLED_TranslatingSaturatedLayerPorePressureTable) {
+  // Measurement, not a check (about 2 min): the mean pore pressure of the translating layer
+  // by grain size, speed and pressure projection, the figures of
+  // verification/saturated_block_fine/known-failure.md (December 2026, stop 28). Run with
+  // --gtest_also_run_disabled_tests --gtest_filter=*PorePressureTable.
+  for (double grain_diameter : {1e-4, 3e-4, 1e-3})
+    for (double speed : {0.0, 0.5}) {
+      const double projected = translating_layer_pore_pressure(grain_diameter, speed);
+      const double unprojected = translating_layer_pore_pressure(grain_diameter, speed, 0);
+      std::printf("D = %.1f mm, speed %.1f m/s: mean pore pressure %.1f Pa (projection off %.1f)\n",
+                  grain_diameter * 1e3, speed, projected, unprojected);
+    }
+  for (int interval : {14, 140, 1400})
+    std::printf("D = 0.1 mm, speed 0.5 m/s, projection every %d steps: %.1f Pa\n", interval,
+                translating_layer_pore_pressure(1e-4, 0.5, interval));
 }
 
 TEST(TwoPhase, TwoThreadsGiveTheSameAnswer) {
