@@ -447,7 +447,8 @@ std::size_t Simulation<dim>::storage_bytes() const {
              static_cast<std::size_t>(coupling_.threads()) * nodes *
                  (3 * sizeof(double) + 2 * sizeof(Vec)) +
              nodes * (2 * sizeof(double) + 4 * sizeof(Vec)) +  // + pore water and mean fields
-             mesh_.cell_count() + water_.points.size();        // the pore water flags
+             mesh_.cell_count() + water_.points.size() +       // the pore water flags
+             mesh_.cell_count() * sizeof(double) + nodes;      // the pore pressure's cell scale
   if (nodal_pressure_)  // the fit's moments and force per thread, its nodal coefficients
     bytes += static_cast<std::size_t>(pressure_fit_.threads()) * nodes *
                  (3 * sizeof(Vec) + sizeof(Eigen::Matrix<double, dim, dim>)) +

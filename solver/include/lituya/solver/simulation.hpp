@@ -202,6 +202,7 @@ class Simulation {
   void update_stress_and_relocate(double dt);
   // Two-phase parts (two_phase.cpp).
   void setup_liquid();
+  void update_pore_pressure_cell_scale();
   void liquid_to_nodes();
   void two_phase_nodal_update(double dt, double damping);
   Vec wall_pore_pressure_push(int node, double dt) const;
@@ -270,8 +271,12 @@ class Simulation {
   // Two velocity fields of the water at the nodes (two_phase.cpp): the free water's is
   // water_.node_velocity (and _acceleration); the pore water's, the water of the liquid
   // points whose cell holds solid points, is below. Only the pore water feels the drag.
-  std::vector<char> cell_has_soil_;   // per cell: it holds solid points
-  std::vector<char> liquid_in_soil_;  // per liquid point: it is pore water
+  std::vector<char> cell_has_soil_;  // per cell: it holds solid points
+  // Per cell: |c| / sum of the soil points' volumes in c inside a soil, 1 elsewhere
+  // (two_phase.cpp, update_pore_pressure_cell_scale).
+  std::vector<double> pore_pressure_cell_scale_;
+  std::vector<char> pore_pressure_surface_node_;  // scratch: nodes of cells without soil
+  std::vector<char> liquid_in_soil_;              // per liquid point: it is pore water
   std::vector<Vec> pore_water_velocity_, pore_water_acceleration_;
   std::vector<Vec> mean_water_velocity_;  // mass-weighted mean of the two (eq. 8's flux)
   double smallest_cell_height_ = 0;       // of the mesh (a length scale for the surface)
