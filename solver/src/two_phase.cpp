@@ -372,7 +372,7 @@ void Simulation<dim>::update_pore_pressure_cell_scale() {
     if (!cell_has_soil_[c])
       for (int node : mesh_.cell_nodes[c]) surface[static_cast<std::size_t>(node)] = 1;
   for (std::size_t c = 0; c < n_cells; ++c) {
-    bool inside = cell_has_soil_[c] && scale[c] > 0;
+    bool inside = scale[c] > 0;  // the cell holds soil points (cell_has_soil_)
     for (int node : mesh_.cell_nodes[c])
       inside = inside && !surface[static_cast<std::size_t>(node)];
     scale[c] = inside ? mesh_.cell_volume[c] / scale[c] : 1.0;

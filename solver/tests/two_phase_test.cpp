@@ -390,11 +390,12 @@ TEST(TwoPhase, WaterTableInsideASoilStaysPut) {
 //     a = g (sin(theta) - mu cos(theta) (rho_sat - rho_w) / rho_sat),
 // and the layer stays put for tan(theta) < mu (rho_sat - rho_w) / rho_sat. The water slides
 // along the bed (a roller for the liquid phase). The layer first settles on a glued bed, so
-// that the release starts from equilibrium stresses. Returns the mean along-slope speed of
-// the solid after `time` (saturated_layer_speed) or the simulation (slide_saturated_layer).
-// The layer settled on its glued bed, with the bed ready to become a `contact` wall of
-// friction mu ("bed", solid) and a roller ("bed_water", liquid). projection_interval: the
-// pressure projection every that many steps (0: off; unset: the default period).
+// that the release starts from equilibrium stresses.
+// settled_saturated_layer: the layer after that settling, its bed ready to become a
+// `contact` wall of friction mu ("bed", solid) and a roller ("bed_water", liquid);
+// projection_interval: the pressure projection every that many steps (0: off; unset: the
+// default period). slide_saturated_layer: the simulation after `time` of sliding;
+// saturated_layer_speed: the solid's mean along-slope speed then.
 Simulation<2> settled_saturated_layer(double theta_deg, double mu, double grain_diameter = 1e-4,
                                       std::optional<int> projection_interval = std::nullopt) {
   BoxScene<2> s;
