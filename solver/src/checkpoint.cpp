@@ -333,6 +333,24 @@ struct CheckpointAccess {
     each_array(s, [&](const std::string& name, const auto& v, std::optional<std::size_t>) {
       out.array(name, v);
     });
+    // The boundary forces summed since the stage history's last row (wall_loads.cpp).
+    out.value(s.wall_impulse_time_);
+    out.array("wall.impulses", flat_wall_impulses(s));
+  }
+
+  // Per boundary condition: force (dim values), normal, tangential (dim), pore pressure.
+  static constexpr std::size_t kWallValues = 2 * dim + 2;
+  static std::vector<double> flat_wall_impulses(const Simulation<dim>& s) {
+    std::vector<double> flat;
+    std::vector<typename Simulation<dim>::WallImpulse> sums = s.wall_impulse_;
+    sums.resize(s.constraints_.size());  // before any stage: none summed yet
+    for (const auto& w : sums) {
+      for (int d = 0; d < dim; ++d) flat.push_back(w.force(d));
+      flat.push_back(w.normal);
+      for (int d = 0; d < dim; ++d) flat.push_back(w.tangential(d));
+      flat.push_back(w.pore_pressure);
+    }
+    return flat;
   }
 
   static void read(BinaryIn& in, Simulation<dim>& s, std::int64_t step_count) {
@@ -343,6 +361,17 @@ struct CheckpointAccess {
     each_array(s, [&](const std::string& name, auto& v, std::optional<std::size_t> expected) {
       in.array(name, v, expected);
     });
+    s.wall_impulse_time_ = in.value<double>();
+    std::vector<double> flat;
+    in.array("wall.impulses", flat, s.constraints_.size() * kWallValues);
+    s.wall_impulse_.assign(s.constraints_.size(), {});
+    for (std::size_t b = 0, k = 0; b < s.constraints_.size(); ++b) {
+      auto& w = s.wall_impulse_[b];
+      for (int d = 0; d < dim; ++d) w.force(d) = flat[k++];
+      w.normal = flat[k++];
+      for (int d = 0; d < dim; ++d) w.tangential(d) = flat[k++];
+      w.pore_pressure = flat[k++];
+    }
     const std::size_t n_nodes = s.mesh_.node_count();
     auto& p = s.projection_;
     if (p.solution.empty()) return;

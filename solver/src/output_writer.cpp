@@ -187,7 +187,10 @@ std::string output_readme(const OutputSettings& settings, int dimension, bool ha
   out << "\nAlso here: log.txt (what the run printed) and summary.toml (the state of the run,\n"
          "and per stage its steps, simulated and wall time, and why it stopped);\n"
          "<stage>_history.csv (per stage: time, time step, kinetic energy of each phase in J\n"
-         "(per metre in 2D), largest point speed in m/s); probes/<name>.csv (the scene's\n"
+         "(per metre in 2D), largest point speed in m/s, and wall_<boundary>_... the mean\n"
+         "force in N (per metre in 2D) on each boundary the stage holds, its normal and\n"
+         "tangential parts and, on a contact wall under water, the effective normal force);\n"
+         "probes/<name>.csv (the scene's\n"
          "[[probe]] records, same units and signs as above); checkpoints/ (the state for\n"
          "`lituya solve --resume` and --from-stage; binary, see manuals/file-formats.md).\n";
   return out.str();

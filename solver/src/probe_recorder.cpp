@@ -217,10 +217,29 @@ std::vector<std::string> ProbeRecorder<dim>::history_header() {
           "max_speed_liquid"};
 }
 
+// Per wall of the stage: the mean force on it over the row's interval, its components, its
+// normal and tangential parts (wall_loads.cpp) and, at a contact wall with water, the
+// effective normal force Coulomb's law acts on.
+template <int dim>
+std::vector<std::string> ProbeRecorder<dim>::wall_columns() const {
+  static constexpr const char* kAxes[] = {"x", "y", "z"};
+  std::vector<std::string> columns;
+  for (const Wall& wall : walls_) {
+    const std::string prefix = "wall_" + wall.name + "_";
+    for (int d = 0; d < dim; ++d) columns.push_back(prefix + "force_" + kAxes[d]);
+    columns.push_back(prefix + "normal");
+    columns.push_back(prefix + "tangential");
+    if (wall.effective_normal) columns.push_back(prefix + "effective_normal");
+  }
+  return columns;
+}
+
 template <int dim>
 ProbeRecorder<dim>::ProbeRecorder(const Simulation<dim>& simulation,
                                   const std::vector<Probe>& probes, fs::path output_folder)
-    : folder_(std::move(output_folder)) {
+    : folder_(std::move(output_folder)),
+      boundaries_(simulation.description().boundaries),
+      has_liquid_(simulation.has_liquid()) {
   const CaseDescription& description = simulation.description();
   const std::string stages_file = (fs::path(description.folder) / "stages.toml").string();
   const Mesh<dim>& mesh = simulation.mesh();
@@ -283,7 +302,21 @@ void ProbeRecorder<dim>::begin_stage(const Stage& stage, double run_start,
                                      std::optional<double> resume_time) {
   stage_ = stage;
   run_start_ = run_start;
-  history_.emplace(history_header());
+  walls_.clear();
+  for (const std::string& name : stage.boundaries) {
+    if (std::any_of(walls_.begin(), walls_.end(), [&](const Wall& w) { return w.name == name; }))
+      continue;
+    Wall wall{name, {}, false};
+    for (std::size_t b = 0; b < boundaries_.size(); ++b)
+      if (boundaries_[b].name == name && boundaries_[b].type != BoundaryType::kTraction) {
+        wall.conditions.push_back(b);
+        wall.effective_normal |= has_liquid_ && boundaries_[b].type == BoundaryType::kContact;
+      }
+    if (!wall.conditions.empty()) walls_.push_back(std::move(wall));
+  }
+  std::vector<std::string> columns = history_header();
+  for (std::string& column : wall_columns()) columns.push_back(std::move(column));
+  history_.emplace(columns);
   history_stage_ = stage.name;
   const double tolerance = 1e-9 * stage.duration;
   const double spacing = stage.duration / kHistoryRowsPerStage;
@@ -298,7 +331,7 @@ void ProbeRecorder<dim>::begin_stage(const Stage& stage, double run_start,
     site.last_sample = -1;
   }
   if (!resume_time) return;
-  reload_rows(history_file(stage.name), history_header(), *history_,
+  reload_rows(history_file(stage.name), columns, *history_,
               [&](const std::vector<std::string>& row) {
                 return row[1] == stage.name && stage_time_of(row) <= *resume_time;
               });
@@ -384,7 +417,7 @@ void ProbeRecorder<dim>::sample(const Simulation<dim>& simulation, Site& site, d
 }
 
 template <int dim>
-void ProbeRecorder<dim>::history_row(const Simulation<dim>& simulation, double t) {
+void ProbeRecorder<dim>::history_row(Simulation<dim>& simulation, double t) {
   if (t == last_history_time_) return;
   last_history_time_ = t;
   const double tolerance = 1e-9 * stage_.duration;
@@ -416,18 +449,40 @@ void ProbeRecorder<dim>::history_row(const Simulation<dim>& simulation, double t
     history_->number(liquid_speed);
   else
     history_->number(kNoValue);
+  // The walls: mean forces since the last row (N, per metre in 2D). The simulation sums
+  // them from the row before (a checkpoint holds the sums, so a resumed run writes the rows
+  // of a run never stopped).
+  const double span = simulation.take_wall_impulses(wall_impulses_);
+  for (const Wall& wall : walls_) {
+    typename Simulation<dim>::WallImpulse sum;
+    for (std::size_t b : wall.conditions) {
+      if (b >= wall_impulses_.size()) continue;
+      sum.force += wall_impulses_[b].force;
+      sum.normal += wall_impulses_[b].normal;
+      sum.tangential += wall_impulses_[b].tangential;
+      sum.pore_pressure += wall_impulses_[b].pore_pressure;
+    }
+    const int values = dim + 2 + (wall.effective_normal ? 1 : 0);
+    if (!(span > 0)) {
+      for (int k = 0; k < values; ++k) history_->number(kNoValue);
+      continue;
+    }
+    for (int d = 0; d < dim; ++d) history_->number(sum.force(d) / span);
+    history_->number(sum.normal / span).number(sum.tangential.norm() / span);
+    if (wall.effective_normal) history_->number((sum.normal - sum.pore_pressure) / span);
+  }
   history_->end_row();
 }
 
 template <int dim>
-void ProbeRecorder<dim>::at_output(const Simulation<dim>& simulation, double t) {
+void ProbeRecorder<dim>::at_output(Simulation<dim>& simulation, double t) {
   for (Site& site : sites_) sample(simulation, site, t);
   if (t > 0) history_row(simulation, t);  // the stage's start has no step yet
   write();
 }
 
 template <int dim>
-void ProbeRecorder<dim>::after_step(const Simulation<dim>& simulation, double t) {
+void ProbeRecorder<dim>::after_step(Simulation<dim>& simulation, double t) {
   const double tolerance = 1e-9 * stage_.duration;
   for (Site& site : sites_)
     if (site.probe.interval > 0 &&

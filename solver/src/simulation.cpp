@@ -154,6 +154,7 @@ void Simulation<dim>::activate_boundaries(const std::vector<std::string>& names)
   solid_.constraints.clear();
   water_.constraints.clear();
   active_tractions_.clear();
+
   for (const std::string& name : names)
     for (std::size_t i = 0; i < description_.boundaries.size(); ++i) {
       if (description_.boundaries[i].name != name) continue;
@@ -165,6 +166,8 @@ void Simulation<dim>::activate_boundaries(const std::vector<std::string>& names)
         if (c->phase != BoundaryPhase::kSolid) water_.constraints.push_back(c);
       }
     }
+  // The boundary forces are summed afresh for each stage (wall_loads.cpp).
+  collect_wall_nodes();
 }
 
 template <int dim>
@@ -223,22 +226,30 @@ void Simulation<dim>::nodal_update(double dt, double damping) {
     return;
   }
   const std::size_t n_nodes = mesh_.node_count();
-  const detail::PhaseSums<dim>& sums = solid_.nodal.sums();
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i) {
-    const double m = sums.mass[i];
-    if (m <= kMassFloor) {
+    if (solid_.nodal.sums().mass[i] <= kMassFloor) {
       solid_.node_velocity[i].setZero();
       solid_.node_acceleration[i].setZero();
       continue;
     }
-    const Vec velocity = sums.momentum[i] / m;
-    Vec force = sums.force[i];
-    apply_local_damping(force, velocity, damping);
-    solid_.node_velocity[i] = velocity + dt * force / m;
-    solid_.node_acceleration[i] = velocity;  // the old velocity, finished below
+    const NodeStep n = dry_node_step(i, damping);
+    solid_.node_velocity[i] = n.vs_old + dt * n.fs / n.ms;
+    solid_.node_acceleration[i] = n.vs_old;  // the old velocity, finished below
   }
   finish_nodal_update(solid_, dt, threads_);
+}
+
+template <int dim>
+typename Simulation<dim>::NodeStep Simulation<dim>::dry_node_step(std::size_t i,
+                                                                  double damping) const {
+  const detail::PhaseSums<dim>& sums = solid_.nodal.sums();
+  NodeStep n;
+  n.ms = sums.mass[i];
+  n.vs_old = sums.momentum[i] / n.ms;
+  n.fs = sums.force[i];
+  apply_local_damping(n.fs, n.vs_old, damping);
+  return n;
 }
 
 template <int dim>
@@ -355,6 +366,7 @@ void Simulation<dim>::step(double dt, double damping) {
   if (has_liquid_) liquid_to_nodes();
   if (!active_tractions_.empty()) apply_tractions();
   nodal_update(dt, damping);
+  accumulate_wall_impulses(dt, damping);
   nodes_to_points(solid_, mesh_, dt, threads_);
   if (has_liquid_) {
     // Each liquid point follows its own water: the pore water's field or the free water's.
@@ -481,6 +493,12 @@ StageReport Simulation<dim>::run_stage(const Stage& stage, const OutputCallback&
                                        const StepCallback& after_step,
                                        const StageProgress* resume) {
   activate_boundaries(stage.boundaries);
+  // The boundary forces of a stage are summed from its start (wall_loads.cpp); a stage going
+  // on from a checkpoint keeps the sums the checkpoint holds.
+  if (!resume) {
+    wall_impulse_.assign(constraints_.size(), WallImpulse{});
+    wall_impulse_time_ = 0;
+  }
   StageReport report;
   report.stage = stage.name;
   const double start_wall = wall_seconds();

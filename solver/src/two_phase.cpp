@@ -442,6 +442,42 @@ void Simulation<dim>::couple_across_soil_surface(std::size_t node, double a, dou
   vp = vp_t + vw_n(0) * normal;
 }
 
+// Step 1 of the nodal update at node i: each phase's velocity before the step and its
+// explicit force; the water's two fields (free water, pore water) each from its own mass,
+// momentum and force.
+template <int dim>
+typename Simulation<dim>::NodeStep Simulation<dim>::two_phase_node_step(std::size_t i,
+                                                                        double damping) const {
+  const detail::PhaseSums<dim>& solid = solid_.nodal.sums();
+  const detail::LiquidSums<dim>& liquid = water_.nodal.sums();
+  const CouplingSums& coupling = coupling_.sums();
+  NodeStep n;
+  n.ms = solid.mass[i];
+  n.mp = liquid.pore_mass[i];
+  n.mf = liquid.mass[i] - n.mp;
+  n.vs_old = velocity_from_momentum(solid.momentum[i], n.ms);
+  n.vf_old = velocity_from_momentum(Vec(liquid.momentum[i] - liquid.pore_momentum[i]), n.mf);
+  n.vp_old = velocity_from_momentum(liquid.pore_momentum[i], n.mp);
+  // Eqs. (15), (16): the pore-pressure force shared by the volumes the phases fill.
+  const Vec pressure_force =
+      (nodal_pressure_ ? pressure_fit_.sums().water_pressure_force[i] : liquid.pressure_force[i]) +
+      coupling.grain_pressure_force[i];
+  const double water_share = pore_pressure_water_share(i);
+  const Vec water_force = water_share * pressure_force;
+  // The water's share goes to its two fields by mass (one pressure per node, one
+  // acceleration); the normal coupling of step 3 keeps them together across the soil's
+  // surface.
+  const Vec pore_water_force =
+      n.mp > kMassFloor ? Vec(water_force * (n.mp / liquid.mass[i])) : Vec(Vec::Zero());
+  n.fs = solid.force[i] + (1.0 - water_share) * pressure_force;
+  n.ff = liquid.force[i] - liquid.pore_force[i] + (water_force - pore_water_force);
+  n.fp = liquid.pore_force[i] + pore_water_force;
+  apply_local_damping(n.fs, n.vs_old, damping);
+  apply_local_damping(n.ff, n.vf_old, damping);
+  apply_local_damping(n.fp, n.vp_old, damping);
+  return n;
+}
+
 template <int dim>
 void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
   const std::size_t n_nodes = mesh_.node_count();
@@ -452,35 +488,13 @@ void Simulation<dim>::two_phase_nodal_update(double dt, double damping) {
   // pore water) each from its own mass, momentum and force.
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t i = 0; i < n_nodes; ++i) {
-    const double ms = solid.mass[i], mp = liquid.pore_mass[i];
-    const double mf = liquid.mass[i] - mp;
-    const Vec vs_old = velocity_from_momentum(solid.momentum[i], ms);
-    const Vec vf_old =
-        velocity_from_momentum(Vec(liquid.momentum[i] - liquid.pore_momentum[i]), mf);
-    const Vec vp_old = velocity_from_momentum(liquid.pore_momentum[i], mp);
-    // Eqs. (15), (16): the pore-pressure force shared by the volumes the phases fill.
-    const Vec pressure_force = (nodal_pressure_ ? pressure_fit_.sums().water_pressure_force[i]
-                                                : liquid.pressure_force[i]) +
-                               coupling.grain_pressure_force[i];
-    const double water_share = pore_pressure_water_share(i);
-    const Vec water_force = water_share * pressure_force;
-    // The water's share goes to its two fields by mass (one pressure per node, one
-    // acceleration); the normal coupling of step 3 keeps them together across the soil's
-    // surface.
-    const Vec pore_water_force =
-        mp > kMassFloor ? Vec(water_force * (mp / liquid.mass[i])) : Vec(Vec::Zero());
-    Vec fs = solid.force[i] + (1.0 - water_share) * pressure_force;
-    Vec ff = liquid.force[i] - liquid.pore_force[i] + (water_force - pore_water_force);
-    Vec fp = liquid.pore_force[i] + pore_water_force;
-    apply_local_damping(fs, vs_old, damping);
-    apply_local_damping(ff, vf_old, damping);
-    apply_local_damping(fp, vp_old, damping);
-    solid_.node_velocity[i] = ms > kMassFloor ? Vec(vs_old + dt * fs / ms) : Vec::Zero();
-    water_.node_velocity[i] = mf > kMassFloor ? Vec(vf_old + dt * ff / mf) : Vec::Zero();
-    pore_water_velocity_[i] = mp > kMassFloor ? Vec(vp_old + dt * fp / mp) : Vec::Zero();
-    solid_.node_acceleration[i] = vs_old;
-    water_.node_acceleration[i] = vf_old;
-    pore_water_acceleration_[i] = vp_old;
+    const NodeStep n = two_phase_node_step(i, damping);
+    solid_.node_velocity[i] = n.ms > kMassFloor ? Vec(n.vs_old + dt * n.fs / n.ms) : Vec::Zero();
+    water_.node_velocity[i] = n.mf > kMassFloor ? Vec(n.vf_old + dt * n.ff / n.mf) : Vec::Zero();
+    pore_water_velocity_[i] = n.mp > kMassFloor ? Vec(n.vp_old + dt * n.fp / n.mp) : Vec::Zero();
+    solid_.node_acceleration[i] = n.vs_old;
+    water_.node_acceleration[i] = n.vf_old;
+    pore_water_acceleration_[i] = n.vp_old;
   }
   // 2. The walls act on each phase before the drag couples them. At a contact wall the
   // grains' share of the pore pressure on the wall is given back without friction, and
@@ -591,20 +605,25 @@ double Simulation<dim>::pore_pressure_water_share(std::size_t node) const {
 // December 2026) counted the pressure half a cell inside the soil: +3.8 % of the effective
 // stress of verification/saturated_block at 0.02 m cells.
 template <int dim>
-typename Simulation<dim>::Vec Simulation<dim>::wall_pore_pressure_push(int node, double dt) const {
-  const double ms = solid_.nodal.sums().mass[node];
-  if (ms <= kMassFloor) return Vec::Zero();
+typename Simulation<dim>::Vec Simulation<dim>::wall_pore_pressure_load(int node) const {
   const double n = node_porosity_[node];
   const double wet_volume =
       std::min(node_mesh_volume_[node], water_.nodal.sums().water_volume[node] / n);
   const Vec gradient_load = materials_[pore_liquid_].liquid_density * wet_volume * gravity_;
-  const Vec wall = (nodal_pressure_ ? pressure_fit_.sums().water_pressure_force[node]
-                                    : water_.nodal.sums().pressure_force[node]) +
-                   coupling_.sums().grain_pressure_force[node] + gradient_load;
+  return (nodal_pressure_ ? pressure_fit_.sums().water_pressure_force[node]
+                          : water_.nodal.sums().pressure_force[node]) +
+         coupling_.sums().grain_pressure_force[node] + gradient_load;
+}
+
+template <int dim>
+typename Simulation<dim>::Vec Simulation<dim>::wall_pore_pressure_push(int node, double dt) const {
+  const double ms = solid_.nodal.sums().mass[node];
+  if (ms <= kMassFloor) return Vec::Zero();
   // The grains' share of the pore-pressure force, as in two_phase_nodal_update: the push must
   // give back exactly what the nodal update gave the grains, or the difference acts as a
   // skeleton load and takes friction.
-  return dt * (1.0 - pore_pressure_water_share(static_cast<std::size_t>(node))) * wall / ms;
+  return dt * (1.0 - pore_pressure_water_share(static_cast<std::size_t>(node))) *
+         wall_pore_pressure_load(node) / ms;
 }
 
 template <int dim>
@@ -821,17 +840,19 @@ const std::vector<double>& Simulation<dim>::acting_liquid_pressure() const {
   return acting_pressure_;
 }
 
-#define LITUYA_TWO_PHASE_INSTANCES(D)                                                        \
-  template void Simulation<D>::setup_liquid();                                               \
-  template void Simulation<D>::update_pore_pressure_cell_scale();                            \
-  template void Simulation<D>::liquid_to_nodes();                                            \
-  template const std::vector<double>& Simulation<D>::acting_liquid_pressure() const;         \
-  template void Simulation<D>::two_phase_nodal_update(double, double);                       \
-  template Simulation<D>::Vec Simulation<D>::wall_pore_pressure_push(int, double) const;     \
-  template double Simulation<D>::pore_pressure_water_share(std::size_t) const;               \
-  template void Simulation<D>::couple_across_soil_surface(std::size_t, double, double, Vec&, \
-                                                          double, Vec&, double, Vec&) const; \
-  template void Simulation<D>::remap_liquid_momentum();                                      \
+#define LITUYA_TWO_PHASE_INSTANCES(D)                                                             \
+  template void Simulation<D>::setup_liquid();                                                    \
+  template void Simulation<D>::update_pore_pressure_cell_scale();                                 \
+  template void Simulation<D>::liquid_to_nodes();                                                 \
+  template const std::vector<double>& Simulation<D>::acting_liquid_pressure() const;              \
+  template void Simulation<D>::two_phase_nodal_update(double, double);                            \
+  template Simulation<D>::NodeStep Simulation<D>::two_phase_node_step(std::size_t, double) const; \
+  template Simulation<D>::Vec Simulation<D>::wall_pore_pressure_push(int, double) const;          \
+  template Simulation<D>::Vec Simulation<D>::wall_pore_pressure_load(int) const;                  \
+  template double Simulation<D>::pore_pressure_water_share(std::size_t) const;                    \
+  template void Simulation<D>::couple_across_soil_surface(std::size_t, double, double, Vec&,      \
+                                                          double, Vec&, double, Vec&) const;      \
+  template void Simulation<D>::remap_liquid_momentum();                                           \
   template void Simulation<D>::update_liquid_and_relocate(double);
 LITUYA_TWO_PHASE_INSTANCES(2)
 LITUYA_TWO_PHASE_INSTANCES(3)

@@ -105,22 +105,9 @@ StageReport run_recorded(Simulation<dim>& sim, ProbeRecorder<dim>& recorder, con
   return report;
 }
 
-// A 2D tank 1 m wide with still water 0.2 m deep, roller walls and bottom; no soil.
+// A 2D tank 1 m wide with still water, roller walls and bottom; no soil.
 BoxScene<2> tank(double depth) {
-  BoxScene<2> s;
-  s.domain_size = {1.0, 0.6};
-  s.cells = {20, 12};
-  s.block_min = {2.0, 2.0};  // no soil
-  s.block_max = {-1.0, -1.0};
-  s.material = sand();
-  s.gravity = {0.0, -kGravity};
-  s.with_water = true;
-  s.water = paper_water();
-  s.water_min = {0.0, 0.0};
-  s.water_max = {1.0, depth};
-  for (const char* side : {"x-", "x+", "y-"})
-    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
-  return s;
+  return still_water_tank(depth);
 }
 
 // Reference: p = rho_w g (H - y) at probes 0.05 to 0.15 m deep, inside cells and on a node.
@@ -274,6 +261,36 @@ TEST(History, KineticEnergyIsTheSimulations) {
   for (const auto& v : sim.points().velocity) speed = std::max(speed, v.norm());
   EXPECT_EQ(t.number(last, "max_speed_solid"), speed);
   EXPECT_EQ(t.number(last, "step"), static_cast<double>(sim.step_count()));
+}
+
+TEST(History, WallForcesAreTheMeansOverTheRowsIntervals) {
+  // Still water 0.2 m deep in a tank 1 m wide: the floor carries rho_w g H L = 1962 N/m, each
+  // wall rho_w g H^2 / 2 = 196.2 N/m (wall_loads_test.cpp has the tolerances; here 0.5 % and
+  // 2 %). Each row holds the mean since the row before: the row takes the simulation's sums,
+  // which are empty after the stage's last row. Rollers carry no effective-normal column (that
+  // is for contact walls).
+  Simulation<2> sim = make_box_simulation<2>(tank(0.2));
+  ScratchFolder folder;
+  ProbeRecorder<2> recorder(sim, {}, folder.path());
+  run_recorded(sim, recorder, dynamic_stage("still", 0.1, 0.05, {"x-", "x+", "y-"}));
+  const Table t = read_table(folder.path() / "still_history.csv");
+  ASSERT_FALSE(t.rows.empty());
+  for (const char* column : {"wall_x-_force_x", "wall_x-_force_y", "wall_x-_normal",
+                             "wall_x-_tangential", "wall_x+_normal", "wall_y-_normal"})
+    EXPECT_NE(std::find(t.header.begin(), t.header.end(), column), t.header.end()) << column;
+  EXPECT_EQ(std::find(t.header.begin(), t.header.end(), "wall_y-_effective_normal"),
+            t.header.end());
+  double impulse = 0, previous = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const double time = t.number(r, "stage_time");
+    impulse += t.number(r, "wall_y-_normal") * (time - previous);
+    previous = time;
+  }
+  const double floor = 1000.0 * kGravity * 0.2;
+  EXPECT_NEAR(impulse / previous, floor, 0.005 * floor);
+  EXPECT_EQ(sim.wall_impulse_time(), 0.0);
+  EXPECT_EQ(sim.wall_impulses()[2].normal, 0.0);
+  EXPECT_NEAR(t.number(t.rows.size() - 1, "wall_x+_normal"), 196.2, 0.02 * 196.2);
 }
 
 TEST(History, ResumedRunKeepsTheRowsUpToTheCheckpointOnly) {

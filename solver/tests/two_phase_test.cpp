@@ -43,22 +43,7 @@ Stage dynamic_stage(double duration, double courant = 0.5) {
 }
 
 // A 2D tank 1 m wide with still water `depth` deep, roller walls and bottom; no solid points.
-BoxScene<2> tank(double depth) {
-  BoxScene<2> s;
-  s.domain_size = {1.0, 0.6};
-  s.cells = {20, 12};
-  s.block_min = {2.0, 2.0};  // no soil
-  s.block_max = {-1.0, -1.0};
-  s.material = soil(0.002);
-  s.gravity = {0.0, -9.81};
-  s.with_water = true;
-  s.water = paper_water();
-  s.water_min = {0.0, 0.0};
-  s.water_max = {1.0, depth};
-  for (const char* side : {"x-", "x+", "y-"})
-    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
-  return s;
-}
+BoxScene<2> tank(double depth) { return still_water_tank(depth); }
 
 template <int dim>
 double max_liquid_speed(const Simulation<dim>& sim) {

@@ -54,6 +54,11 @@ Material paper_water();
 // E = 10 MPa, nu = 0.3, D_p = `grain_diameter`; water: paper_water().
 BoxScene<2> sand_bed_under_water(double grain_diameter);
 
+// Still water `depth` deep in a 2D tank 1 m wide and 0.6 m high (20 x 12 cells), roller walls
+// and floor (sides "x-", "x+", "y-"), hydrostatic pressure; no soil (the material is the sand
+// of sand_bed_under_water, with no points).
+BoxScene<2> still_water_tank(double depth);
+
 // A quasi-static stage named "settle" with heavy local damping (0.7) that ends when the
 // kinetic energy falls to `kinetic_energy_ratio` of its peak, with `boundaries` active: brings
 // a scene to equilibrium stresses before a release.

@@ -77,13 +77,16 @@ class ProbeRecorder {
   // `run_start` is the run time at its start.
   void begin_stage(const Stage& stage, double run_start, std::optional<double> resume_time);
   // At an output of the running stage (stage time t): every probe and a history row.
-  void at_output(const Simulation<dim>& simulation, double t);
+  // A history row takes the simulation's boundary forces summed since the row before
+  // (Simulation::take_wall_impulses), the only change it makes to the simulation.
+  void at_output(Simulation<dim>& simulation, double t);
   // After a step (stage time t): the probes and history rows that are due.
-  void after_step(const Simulation<dim>& simulation, double t);
+  void after_step(Simulation<dim>& simulation, double t);
   // Writes every table (atomically).
   void write() const;
 
-  // The columns of a probe's table, and of the history.
+  // The columns of a probe's table, and of the history (the columns every stage has; a
+  // stage's table adds its walls' columns, wall_columns()).
   static std::vector<std::string> probe_header(const Probe& probe);
   static std::vector<std::string> history_header();
   // Rows of the history per stage (besides one per output).
@@ -101,8 +104,16 @@ class ProbeRecorder {
     double last_sample = -1;           // stage time of the last row of the running stage
     std::size_t point_index = 0;       // point probes: where the point's id was last found
   };
+  // A boundary name of the running stage and the conditions of that name it holds
+  // (tractions are loads, not walls).
+  struct Wall {
+    std::string name;
+    std::vector<std::size_t> conditions;  // indices into the case's boundaries
+    bool effective_normal = false;        // a contact wall in a case with water
+  };
+  std::vector<std::string> wall_columns() const;
   void sample(const Simulation<dim>& simulation, Site& site, double t);
-  void history_row(const Simulation<dim>& simulation, double t);
+  void history_row(Simulation<dim>& simulation, double t);
   std::filesystem::path history_file(const std::string& stage) const;
 
   std::filesystem::path folder_;
@@ -115,6 +126,12 @@ class ProbeRecorder {
   std::string history_stage_;
   long next_history_mark_ = 1;
   double last_history_time_ = -1;
+  // The case's boundary conditions, and the walls of the running stage (each history row
+  // writes the mean force on them since the row before).
+  std::vector<BoundaryCondition> boundaries_;
+  bool has_liquid_ = false;
+  std::vector<Wall> walls_;
+  std::vector<typename Simulation<dim>::WallImpulse> wall_impulses_;  // scratch of a row
 };
 
 extern template class ProbeRecorder<2>;

@@ -150,6 +150,24 @@ class Simulation {
   // Applies the pore water volume projection now (pore_volume_projection.cpp); for tests.
   // Needs the nodal porosity of a step (or of liquid_to_nodes) before it.
   int project_pore_volume_for_test() { return project_pore_water_volume(); }
+  // What the material pushes on each boundary condition with (wall_loads.cpp), summed as
+  // impulses over the steps since the running stage started or since the last
+  // take_wall_impulses(); index i is description().boundaries[i]. Tractions and inactive
+  // conditions stay zero. The sums are state: a checkpoint holds them.
+  struct WallImpulse {
+    Vec force = Vec::Zero();       // N s (2D: per metre), the sum of the nodes' forces
+    double normal = 0;             // N s, the sum of each node's force along its wall's
+                                   // outward normal: positive where the material presses
+    Vec tangential = Vec::Zero();  // N s, the sum of each node's force across that normal
+    double pore_pressure = 0;      // N s, contact walls with water: the pore pressure's share
+                                   // of `normal`; normal - pore_pressure is the effective one
+  };
+  const std::vector<WallImpulse>& wall_impulses() const { return wall_impulse_; }
+  // s: the time those impulses were summed over.
+  double wall_impulse_time() const { return wall_impulse_time_; }
+  // Moves the sums into `impulses` and starts them afresh; returns the time they cover (the
+  // stage history takes them at each of its rows, probe_recorder.cpp).
+  double take_wall_impulses(std::vector<WallImpulse>& impulses);
   // Total number of points (solid + liquid), for throughput figures.
   std::size_t point_count() const { return solid_.points.size() + water_.points.size(); }
   // Bytes held by points, nodes and mesh (for the memory-per-point report).
@@ -206,6 +224,19 @@ class Simulation {
   void liquid_to_nodes();
   void two_phase_nodal_update(double dt, double damping);
   Vec wall_pore_pressure_push(int node, double dt) const;
+  // W_i: the wall's reaction to the whole pore-pressure force at wall node i (two_phase.cpp).
+  Vec wall_pore_pressure_load(int node) const;
+  // Adds the step's boundary forces to wall_impulse_ (wall_loads.cpp); `damping` the step's.
+  void accumulate_wall_impulses(double dt, double damping);
+  // A node's masses, velocities before the step and explicit forces in the nodal update (the
+  // grains; with water also its free and pore fields), as the update computes them and as
+  // the boundary forces recompute them at the wall nodes.
+  struct NodeStep {
+    double ms = 0, mf = 0, mp = 0;
+    Vec vs_old, vf_old, vp_old, fs, ff, fp;
+  };
+  NodeStep dry_node_step(std::size_t i, double damping) const;
+  NodeStep two_phase_node_step(std::size_t i, double damping) const;
   // The water's share of the nodal pore-pressure force (eqs. 15, 16; two_phase.cpp).
   double pore_pressure_water_share(std::size_t node) const;
   // Where free and pore water meet: common normal velocity, drag, free tangential slip.
@@ -283,6 +314,22 @@ class Simulation {
   // Per contact-wall node, dt (1 - n) W / m_s: the velocity the wall's reaction to the grains'
   // share of the pore pressure gives them (W: the wall part of the nodal pore-pressure force).
   std::vector<Vec> node_wall_pore_pressure_push_;
+  // Boundary forces (wall_loads.cpp): the wall nodes of the running stage, with their
+  // conditions and normals, and the sums per boundary condition.
+  struct WallEntry {
+    std::size_t boundary;  // index into constraints_
+    Vec normal;            // the wall's outward normal at the node
+    bool holds_tangent;    // the condition can push across its normal (fixed, friction)
+  };
+  struct WallNode {
+    int node;
+    std::size_t first, count;  // its entries in wall_entries_
+  };
+  void collect_wall_nodes();
+  std::vector<WallEntry> wall_entries_;
+  std::vector<WallNode> wall_nodes_;
+  std::vector<WallImpulse> wall_impulse_;
+  double wall_impulse_time_ = 0;
   std::vector<Vec> grid_velocity_, grid_liquid_velocity_;  // map_to_grid (output only)
   std::vector<double> node_mesh_volume_;        // integral of N_i over the mesh (lumped volume)
   std::vector<double> liquid_flux_divergence_;  // per liquid point, div((1-n) v_s + n v_w)
