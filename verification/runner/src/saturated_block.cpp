@@ -5,9 +5,12 @@
 // (verification/saturated_block_fine/README.md).
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <stdexcept>
 
 #include "case_support.hpp"
 #include "incline_travel.hpp"
+#include "lituya/common/csv_writer.hpp"
 #include "lituya/post/plot.hpp"
 
 namespace lituya::verify {
@@ -27,6 +30,70 @@ InclineTravel run_block(const CaseContext& context, const std::string& name,
       run_scene(context, context.source / ("scene_" + variant + "_" + name + ".toml"),
                 context.work / name),
       stage, kDx, kDy);
+}
+
+// The mean of the history columns `columns` of a run's stage over the stage times [from, to]:
+// each row holds the mean force since the row before, so the rows are weighted by their
+// intervals (probe_recorder.cpp).
+std::vector<double> mean_history(const std::filesystem::path& case_folder, const std::string& stage,
+                                 const std::vector<std::string>& columns, double from, double to) {
+  const auto file = case_folder / "output" / (stage + "_history.csv");
+  std::ifstream in(file);
+  std::string line;
+  if (!in || !std::getline(in, line)) throw std::runtime_error(file.string() + ": no history");
+  const std::vector<std::string> header = csv_split(line);
+  auto index = [&](const std::string& name) {
+    const auto at = std::find(header.begin(), header.end(), name);
+    if (at == header.end()) throw std::runtime_error(file.string() + ": no column " + name);
+    return static_cast<std::size_t>(at - header.begin());
+  };
+  const std::size_t time_column = index("stage_time");
+  std::vector<std::size_t> value_columns;
+  for (const std::string& c : columns) value_columns.push_back(index(c));
+  std::vector<double> sums(columns.size(), 0.0);
+  double previous = 0, weight = 0;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> row = csv_split(line);
+    const double time = std::stod(row.at(time_column));
+    const double span = std::min(time, to) - std::max(previous, from);
+    previous = time;
+    if (!(span > 0)) continue;
+    for (std::size_t k = 0; k < columns.size(); ++k)
+      sums[k] += span * std::stod(row.at(value_columns[k]));
+    weight += span;
+  }
+  for (double& v : sums) v = weight > 0 ? v / weight : NAN;
+  return sums;
+}
+
+// The bed's own forces on the block of fine sand (the `friction` contact wall's columns of the
+// slide history; wall_loads.cpp), against the closed form of the README: Coulomb friction on
+// the effective normal force, and that force the buoyant weight's component normal to the
+// slope. Its tolerance, 2.66 %, is the friction error that would move the friction ratio by
+// its own 2 %: 0.02 x 0.5711 / (0.2 / tan(25 deg)).
+void add_bed_force_checks(const CaseContext& context, CaseResult& result, double duration) {
+  const double g = 9.81, rho_sat = 0.6 * 2650.0 + 0.4 * 1000.0, rho_w = 1000.0;
+  const double block_area = 0.8 * 0.06;  // m2 per metre of width
+  const double buoyant_normal = (rho_sat - rho_w) * g * block_area * std::cos(kTheta);
+  const double tolerance =
+      0.02 * (1.0 - kMuSlide / std::tan(kTheta)) / (kMuSlide / std::tan(kTheta));
+  const std::vector<std::string> columns = {"wall_friction_tangential",
+                                            "wall_friction_effective_normal"};
+  const auto run = context.work / "slides";
+  const auto whole = mean_history(run, "slide", columns, 0, duration);
+  add_check(result, "bed friction / (mu x effective normal force), over the slide", "-",
+            whole[0] / (kMuSlide * whole[1]), 1.0, 0.01);
+  const auto first = mean_history(run, "slide", columns, 0, 0.1 * duration);
+  add_check(result, "effective normal force on the bed, first tenth of the slide", "N/m", first[1],
+            buoyant_normal, tolerance * buoyant_normal);
+  // While it slides the block goes deeper and its pore water must flow in to follow the rising
+  // pressure around it: the continuum lags at the bed by 25.1 Pa after 0.3 s and 43.0 Pa after
+  // 0.5 s (consolidation_lag.py), which adds that times the block's length to the effective
+  // normal force.
+  const double lag = context.full ? 43.0 : 25.1;
+  const auto last = mean_history(run, "slide", columns, 0.9 * duration, duration);
+  add_check(result, "effective normal force on the bed, last tenth of the slide", "N/m", last[1],
+            buoyant_normal + lag * 0.8, tolerance * (buoyant_normal + lag * 0.8));
 }
 
 // Friction alone: the same block without friction has the same mass, buoyancy and displaced
@@ -95,6 +162,7 @@ void run_saturated_block_fine(const CaseContext& context, CaseResult& result) {
   // The locked block displaces its whole volume: its added mass has no closed form here, so
   // only the friction ratio is checked (README.md).
   add_friction_ratio_check(result, slides, free);
+  add_bed_force_checks(context, result, context.full ? 0.5 : 0.3);
   write_travel(context, result,
                "Saturated block of fine sand under water on a 25 degree incline: travel", slides,
                free, nullptr, NAN, NAN);
