@@ -74,6 +74,26 @@ BoxScene<2> still_water_tank(double depth) {
   return s;
 }
 
+BoxScene<2> block_on_incline(double theta_deg, const BoundaryCondition& bed) {
+  BoxScene<2> scene;
+  scene.domain_size = {2.0, 0.5};
+  scene.cells = {80, 20};
+  scene.block_min = {0.2, 0.0};
+  scene.block_max = {0.6, 0.1};
+  scene.material.name = "block";
+  scene.material.model = MaterialModel::kLinearElastic;
+  scene.material.porosity = 0.5;
+  scene.material.solid_density = 4000.0;
+  scene.material.youngs_modulus = 5e7;
+  scene.material.poisson_ratio = 0.3;
+  const double theta = theta_deg * 3.14159265358979323846 / 180;
+  scene.gravity = {9.81 * std::sin(theta), -9.81 * std::cos(theta)};
+  BoundaryCondition glued = box_condition(BoundaryType::kFixed);
+  glued.name = "glued";
+  scene.boundaries = {{"y-", glued}, {"y-", bed}};
+  return scene;
+}
+
 namespace {
 // Points of the standard patterns in barycentric coordinates (equal volumes).
 template <int dim>

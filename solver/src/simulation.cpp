@@ -154,7 +154,6 @@ void Simulation<dim>::activate_boundaries(const std::vector<std::string>& names)
   solid_.constraints.clear();
   water_.constraints.clear();
   active_tractions_.clear();
-
   for (const std::string& name : names)
     for (std::size_t i = 0; i < description_.boundaries.size(); ++i) {
       if (description_.boundaries[i].name != name) continue;
@@ -166,7 +165,7 @@ void Simulation<dim>::activate_boundaries(const std::vector<std::string>& names)
         if (c->phase != BoundaryPhase::kSolid) water_.constraints.push_back(c);
       }
     }
-  // The boundary forces are summed afresh for each stage (wall_loads.cpp).
+  // The nodes whose forces the boundary forces sum (wall_loads.cpp).
   collect_wall_nodes();
 }
 

@@ -51,52 +51,70 @@ double Simulation<dim>::take_wall_impulses(std::vector<WallImpulse>& impulses) {
   return time;
 }
 
-// The wall nodes of the stage's boundaries. The sums are not touched: run_stage starts them
-// afresh at a stage's start, and a run going on from a checkpoint keeps the checkpoint's.
+// The wall nodes of the stage's boundaries, and what splits each node's force between them.
+// The sums are not touched: run_stage starts them afresh at a stage's start, and a run going
+// on from a checkpoint keeps the checkpoint's.
 template <int dim>
 void Simulation<dim>::collect_wall_nodes() {
+  using Normals = Eigen::Matrix<double, dim, Eigen::Dynamic>;
   if (wall_impulse_.size() != constraints_.size())
     wall_impulse_.assign(constraints_.size(), WallImpulse{});
-  wall_entries_.clear();
-  wall_nodes_.clear();
   // The held conditions (a condition on both phases is in both lists), in the case's order.
   std::vector<char> held(constraints_.size(), 0);
   for (const auto* list : {&solid_.constraints, &water_.constraints})
     for (const NodalConstraint<dim>* c : *list)
       held[static_cast<std::size_t>(c - constraints_.data())] = 1;
-  // Every (node, condition, normal) entry, grouped by node in node order: a node on two walls
-  // shares its force between them (accumulate_wall_impulses).
+  // Every (node, condition, normal) entry, grouped by node in node order.
+  wall_entries_.clear();
   for (std::size_t b = 0; b < constraints_.size(); ++b) {
     if (!held[b]) continue;
     const NodalConstraint<dim>& c = constraints_[b];
-    const bool holds_tangent = c.type == BoundaryType::kFixed || c.type == BoundaryType::kFixity ||
-                               (c.type == BoundaryType::kContact && c.friction > 0);
     for (std::size_t k = 0; k < c.nodes.size(); ++k)
-      wall_entries_.push_back({b, c.normal[k], holds_tangent});
+      wall_entries_.push_back({c.nodes[k], b, c.normal[k], c.normal[k], 0.0});
   }
-  std::vector<int> entry_node;
-  for (std::size_t b = 0; b < constraints_.size(); ++b)
-    if (held[b])
-      for (int node : constraints_[b].nodes) entry_node.push_back(node);
-  std::vector<std::size_t> order(wall_entries_.size());
-  for (std::size_t e = 0; e < order.size(); ++e) order[e] = e;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return entry_node[a] < entry_node[b]; });
-  std::vector<WallEntry> sorted;
-  sorted.reserve(order.size());
-  for (std::size_t e : order) {
-    const int node = entry_node[e];
-    if (wall_nodes_.empty() || wall_nodes_.back().node != node)
-      wall_nodes_.push_back({node, sorted.size(), 0});
-    ++wall_nodes_.back().count;
-    sorted.push_back(wall_entries_[e]);
+  std::stable_sort(wall_entries_.begin(), wall_entries_.end(),
+                   [](const WallEntry& a, const WallEntry& b) { return a.node < b.node; });
+  wall_nodes_.clear();
+  for (std::size_t e = 0; e < wall_entries_.size(); ++e)
+    if (wall_nodes_.empty() || wall_nodes_.back().node != wall_entries_[e].node)
+      wall_nodes_.push_back({wall_entries_[e].node, e, 1, false});
+    else
+      ++wall_nodes_.back().count;
+  // A node on several walls (a corner) shares its force: each wall takes the part along its own
+  // normal, by least squares (the normals need not be orthogonal), a row of the normals'
+  // pseudo-inverse; the rest, across them all (the friction, or the grip of a fixed wall),
+  // goes in equal shares to the walls that can take it, or to all where none can. One wall:
+  // the plain projection on its normal, and all the rest.
+  for (WallNode& wall_node : wall_nodes_) {
+    WallEntry* entries = wall_entries_.data() + wall_node.first;
+    const std::size_t count = wall_node.count;
+    std::size_t gripping = 0;
+    for (std::size_t e = 0; e < count; ++e) {
+      const NodalConstraint<dim>& c = constraints_[entries[e].boundary];
+      gripping += c.type == BoundaryType::kFixed || c.type == BoundaryType::kFixity ||
+                  (c.type == BoundaryType::kContact && c.friction > 0);
+      wall_node.contact |= has_liquid_ && c.type == BoundaryType::kContact;
+    }
+    for (std::size_t e = 0; e < count; ++e) {
+      const NodalConstraint<dim>& c = constraints_[entries[e].boundary];
+      const bool grips = c.type == BoundaryType::kFixed || c.type == BoundaryType::kFixity ||
+                         (c.type == BoundaryType::kContact && c.friction > 0);
+      entries[e].tangential_share = gripping == 0
+                                        ? 1.0 / static_cast<double>(count)
+                                        : (grips ? 1.0 / static_cast<double>(gripping) : 0.0);
+    }
+    if (count == 1) continue;
+    Normals normals(dim, static_cast<Eigen::Index>(count));
+    for (std::size_t e = 0; e < count; ++e)
+      normals.col(static_cast<Eigen::Index>(e)) = entries[e].normal;
+    const Eigen::MatrixXd inverse = normals.completeOrthogonalDecomposition().pseudoInverse();
+    for (std::size_t e = 0; e < count; ++e)
+      entries[e].dual = inverse.row(static_cast<Eigen::Index>(e)).transpose();
   }
-  wall_entries_ = std::move(sorted);
 }
 
 template <int dim>
 void Simulation<dim>::accumulate_wall_impulses(double dt, double damping) {
-  using Normals = Eigen::Matrix<double, dim, Eigen::Dynamic>;
   wall_impulse_time_ += dt;
   for (const WallNode& wall_node : wall_nodes_) {
     const auto node = static_cast<std::size_t>(wall_node.node);
@@ -114,49 +132,23 @@ void Simulation<dim>::accumulate_wall_impulses(double dt, double damping) {
       const NodeStep n = dry_node_step(node, damping);
       force = n.fs - n.ms * solid_.node_acceleration[node];
     }
-    // `force` is -R, the force on the walls.
+    // `force` is -R, the force on the walls; split as collect_wall_nodes says.
     const WallEntry* entries = wall_entries_.data() + wall_node.first;
-    const std::size_t count = wall_node.count;
-    bool pore_pressure = false;
-    for (std::size_t e = 0; e < count; ++e)
-      pore_pressure |= wet && constraints_[entries[e].boundary].type == BoundaryType::kContact;
+    const bool pore_pressure = wet && wall_node.contact;
     const Vec pore_load =
         pore_pressure ? wall_pore_pressure_load(wall_node.node) : Vec(Vec::Zero());
-    // The force along the walls' normals, each wall taking its own; what is left acts across
-    // them all (the friction, or the grip of a fixed wall) and goes to the walls that can take
-    // it, shared equally. One wall: the plain projection. Several (a corner, a few nodes of a
-    // case): least squares, as the normals need not be orthogonal.
-    double along_one = 0, pore_along_one = 0;
-    Eigen::VectorXd along, pore_along;  // several walls only (no allocation for one)
-    Vec across;
-    if (count == 1) {
-      along_one = force.dot(entries[0].normal);
-      across = force - along_one * entries[0].normal;
-      pore_along_one = pore_load.dot(entries[0].normal);
-    } else {
-      Normals normals(dim, static_cast<Eigen::Index>(count));
-      for (std::size_t e = 0; e < count; ++e)
-        normals.col(static_cast<Eigen::Index>(e)) = entries[e].normal;
-      const auto split = normals.completeOrthogonalDecomposition();
-      along = split.solve(force);
-      across = force - normals * along;
-      pore_along = split.solve(pore_load);
-    }
-    std::size_t gripping = 0;
-    for (std::size_t e = 0; e < count; ++e) gripping += entries[e].holds_tangent ? 1 : 0;
-    for (std::size_t e = 0; e < count; ++e) {
+    Vec across = force;
+    for (std::size_t e = 0; e < wall_node.count; ++e)
+      across -= entries[e].dual.dot(force) * entries[e].normal;
+    for (std::size_t e = 0; e < wall_node.count; ++e) {
       const WallEntry& entry = entries[e];
       WallImpulse& sum = wall_impulse_[entry.boundary];
-      const auto k = static_cast<Eigen::Index>(e);
-      const double normal = count == 1 ? along_one : along(k);
-      const bool takes_share = gripping == 0 || entry.holds_tangent;
-      const double share =
-          takes_share ? 1.0 / static_cast<double>(gripping == 0 ? count : gripping) : 0.0;
+      const double normal = entry.dual.dot(force);
       sum.normal += dt * normal;
-      sum.tangential += dt * share * across;
-      sum.force += dt * (normal * entry.normal + share * across);
+      sum.tangential += dt * entry.tangential_share * across;
+      sum.force += dt * (normal * entry.normal + entry.tangential_share * across);
       if (pore_pressure && constraints_[entry.boundary].type == BoundaryType::kContact)
-        sum.pore_pressure += dt * (count == 1 ? pore_along_one : pore_along(k));
+        sum.pore_pressure += dt * entry.dual.dot(pore_load);
     }
   }
 }

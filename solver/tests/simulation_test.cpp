@@ -103,19 +103,9 @@ TEST(Simulation, FreeFallCentreOfMass3D) {
 // quasi-statically on a no-slip floor, so the release starts from equilibrium stresses and
 // the normal force does not ring.
 double sliding_block_velocity(double theta_deg, double mu, double time) {
-  BoxScene<2> scene;
-  scene.domain_size = {2.0, 0.5};
-  scene.cells = {80, 20};
-  scene.block_min = {0.2, 0.0};
-  scene.block_max = {0.6, 0.1};
-  scene.material = elastic_material(2000, 5e7, 0.3);
-  const double theta = theta_deg * kPi / 180;
-  scene.gravity = {9.81 * std::sin(theta), -9.81 * std::cos(theta)};
-  BoundaryCondition glued = box_condition(BoundaryType::kFixed);
-  glued.name = "glued";
   BoundaryCondition floor = box_condition(BoundaryType::kContact, mu);
   floor.name = "floor";
-  scene.boundaries = {{"y-", glued}, {"y-", floor}};
+  const BoxScene<2> scene = block_on_incline(theta_deg, floor);
   auto sim = make_box_simulation<2>(scene);
   sim.run_stage(settling_stage(0.5, 1e-6, {"glued"}), nullptr);
   Stage stage = dynamic_stage(time);

@@ -43,7 +43,9 @@ Stage dynamic_stage(double duration, double courant = 0.5) {
 }
 
 // A 2D tank 1 m wide with still water `depth` deep, roller walls and bottom; no solid points.
-BoxScene<2> tank(double depth) { return still_water_tank(depth); }
+BoxScene<2> tank(double depth) {
+  return still_water_tank(depth);
+}
 
 template <int dim>
 double max_liquid_speed(const Simulation<dim>& sim) {

@@ -16,17 +16,6 @@ using namespace lituya::solver;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kGravity = 9.81;
 
-Material elastic_block() {
-  Material m;
-  m.name = "block";
-  m.model = MaterialModel::kLinearElastic;
-  m.porosity = 0.5;
-  m.solid_density = 4000.0;  // dry density 2000 kg/m3
-  m.youngs_modulus = 5e7;
-  m.poisson_ratio = 0.3;
-  return m;
-}
-
 Stage dynamic_stage(double duration, std::vector<std::string> boundaries) {
   Stage s;
   s.name = "test";
@@ -57,17 +46,7 @@ typename Simulation<dim>::WallImpulse mean_load(const Simulation<dim>& sim,
 // A block 0.4 m x 0.1 m of dry density 2000 kg/m3 on a bed, gravity tilted by theta (an
 // incline); it first settles on a glued bed, then the bed named `bed` holds it for `time`.
 Simulation<2> block_on_bed(double theta_deg, const BoundaryCondition& bed, double time) {
-  BoxScene<2> scene;
-  scene.domain_size = {2.0, 0.5};
-  scene.cells = {80, 20};
-  scene.block_min = {0.2, 0.0};
-  scene.block_max = {0.6, 0.1};
-  scene.material = elastic_block();
-  const double theta = theta_deg * kPi / 180;
-  scene.gravity = {kGravity * std::sin(theta), -kGravity * std::cos(theta)};
-  BoundaryCondition glued = box_condition(BoundaryType::kFixed);
-  glued.name = "glued";
-  scene.boundaries = {{"y-", glued}, {"y-", bed}};
+  const BoxScene<2> scene = block_on_incline(theta_deg, bed);
   Simulation<2> sim = make_box_simulation<2>(scene);
   sim.run_stage(settling_stage(0.5, 1e-6, {"glued"}), nullptr);
   sim.run_stage(dynamic_stage(time, {bed.name}), nullptr);

@@ -5,13 +5,11 @@
 // (verification/saturated_block_fine/README.md).
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <stdexcept>
 
 #include "case_support.hpp"
 #include "incline_travel.hpp"
-#include "lituya/common/csv_writer.hpp"
 #include "lituya/post/plot.hpp"
+#include "lituya/sweep/measures.hpp"
 
 namespace lituya::verify {
 
@@ -37,33 +35,23 @@ InclineTravel run_block(const CaseContext& context, const std::string& name,
 // intervals (probe_recorder.cpp).
 std::vector<double> mean_history(const std::filesystem::path& case_folder, const std::string& stage,
                                  const std::vector<std::string>& columns, double from, double to) {
-  const auto file = case_folder / "output" / (stage + "_history.csv");
-  std::ifstream in(file);
-  std::string line;
-  if (!in || !std::getline(in, line)) throw std::runtime_error(file.string() + ": no history");
-  const std::vector<std::string> header = csv_split(line);
-  auto index = [&](const std::string& name) {
-    const auto at = std::find(header.begin(), header.end(), name);
-    if (at == header.end()) throw std::runtime_error(file.string() + ": no column " + name);
-    return static_cast<std::size_t>(at - header.begin());
-  };
-  const std::size_t time_column = index("stage_time");
-  std::vector<std::size_t> value_columns;
-  for (const std::string& c : columns) value_columns.push_back(index(c));
-  std::vector<double> sums(columns.size(), 0.0);
-  double previous = 0, weight = 0;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> row = csv_split(line);
-    const double time = std::stod(row.at(time_column));
-    const double span = std::min(time, to) - std::max(previous, from);
-    previous = time;
-    if (!(span > 0)) continue;
-    for (std::size_t k = 0; k < columns.size(); ++k)
-      sums[k] += span * std::stod(row.at(value_columns[k]));
-    weight += span;
+  const auto file = (case_folder / "output" / (stage + "_history.csv")).string();
+  const sweep::CsvTable table = sweep::read_csv(file, true);  // the `stage` column is text
+  const std::vector<double> time = table.column("stage_time", file);
+  std::vector<double> means;
+  for (const std::string& name : columns) {
+    const std::vector<double> values = table.column(name, file);
+    double sum = 0, weight = 0, previous = 0;
+    for (std::size_t r = 0; r < time.size(); ++r) {
+      const double span = std::min(time[r], to) - std::max(previous, from);
+      previous = time[r];
+      if (!(span > 0)) continue;
+      sum += span * values[r];
+      weight += span;
+    }
+    means.push_back(weight > 0 ? sum / weight : NAN);
   }
-  for (double& v : sums) v = weight > 0 ? v / weight : NAN;
-  return sums;
+  return means;
 }
 
 // The bed's own forces on the block of fine sand (the `friction` contact wall's columns of the

@@ -59,6 +59,12 @@ BoxScene<2> sand_bed_under_water(double grain_diameter);
 // of sand_bed_under_water, with no points).
 BoxScene<2> still_water_tank(double depth);
 
+// An elastic block 0.4 m x 0.1 m (dry density 2000 kg/m3, n = 0.5, E = 50 MPa, nu = 0.3)
+// on the floor of a 2 m x 0.5 m box (80 x 20 cells), gravity tilted by theta (an incline
+// descending towards +x). Two conditions on the floor ("y-"): "glued" (fixed), for a settling
+// stage, and `bed`, which must be named.
+BoxScene<2> block_on_incline(double theta_deg, const BoundaryCondition& bed);
+
 // A quasi-static stage named "settle" with heavy local damping (0.7) that ends when the
 // kinetic energy falls to `kinetic_energy_ratio` of its peak, with `boundaries` active: brings
 // a scene to equilibrium stresses before a release.

@@ -317,13 +317,16 @@ class Simulation {
   // Boundary forces (wall_loads.cpp): the wall nodes of the running stage, with their
   // conditions and normals, and the sums per boundary condition.
   struct WallEntry {
-    std::size_t boundary;  // index into constraints_
-    Vec normal;            // the wall's outward normal at the node
-    bool holds_tangent;    // the condition can push across its normal (fixed, friction)
+    int node;
+    std::size_t boundary;     // index into constraints_
+    Vec normal;               // the wall's outward normal at the node
+    Vec dual;                 // the node's force . dual is this wall's normal part
+    double tangential_share;  // of the force across all the node's walls
   };
   struct WallNode {
     int node;
     std::size_t first, count;  // its entries in wall_entries_
+    bool contact;              // a contact wall in a case with water: pore pressure summed
   };
   void collect_wall_nodes();
   std::vector<WallEntry> wall_entries_;
