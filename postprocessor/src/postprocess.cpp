@@ -514,14 +514,14 @@ TableColumns table_columns(const fs::path& csv) {
 bool plot_columns(PostFolder& out, const fs::path& csv, const TableColumns& table,
                   const std::string& x_column, const std::vector<std::string>& prefixes,
                   const std::string& png, const std::string& title, const std::string& xlabel,
-                  const std::string& ylabel) {
+                  const std::string& ylabel, bool exact = false) {
   std::vector<PlotSeries> series;
   const auto x = std::find(table.names.begin(), table.names.end(), x_column);
   if (x == table.names.end()) return true;
   for (std::size_t k = 0; k < table.names.size(); ++k) {
     const std::string& name = table.names[k];
     const bool wanted = std::any_of(prefixes.begin(), prefixes.end(), [&](const std::string& p) {
-      return name == p || name.rfind(p + "_", 0) == 0;
+      return name == p || (!exact && name.rfind(p + "_", 0) == 0);
     });
     if (!wanted || !table.has_value[k]) continue;
     PlotSeries s{csv, static_cast<int>(x - table.names.begin()) + 1, static_cast<int>(k) + 1, name};
@@ -529,6 +529,40 @@ bool plot_columns(PostFolder& out, const fs::path& csv, const TableColumns& tabl
   }
   if (series.empty()) return true;
   return out.plot(png, title, xlabel, ylabel, series);
+}
+
+// The boundaries' names in a stage history: each held boundary <name> has the columns
+// wall_<name>_force_x, _y (_z), _normal, _tangential (solver/src/wall_loads.cpp). Read from
+// the _force_x columns, the one suffix no other column of a boundary ends in, so a boundary
+// named "bed_normal" is not taken for the normal force of one named "bed".
+std::vector<std::string> wall_names(const TableColumns& table) {
+  const std::string prefix = "wall_", suffix = "_force_x";
+  std::vector<std::string> names;
+  for (const std::string& column : table.names)
+    if (column.size() > prefix.size() + suffix.size() && column.rfind(prefix, 0) == 0 &&
+        column.compare(column.size() - suffix.size(), suffix.size(), suffix) == 0)
+      names.push_back(column.substr(prefix.size(), column.size() - prefix.size() - suffix.size()));
+  return names;
+}
+
+// One plot per held boundary: the normal force the material exerts on it, the tangential
+// (friction) force and, on a contact wall in a case with water, the effective normal force
+// Coulomb's law acts on. Mean forces over each row's interval, per metre in 2D.
+bool plot_wall_forces(PostFolder& out, const fs::path& csv, const TableColumns& table,
+                      const std::string& stem, const std::string& stage) {
+  bool plotted = true;
+  for (const std::string& wall : wall_names(table)) {
+    const std::string w = "wall_" + wall;
+    const bool three_d =
+        std::find(table.names.begin(), table.names.end(), w + "_force_z") != table.names.end();
+    plotted =
+        plot_columns(out, csv, table, "stage_time",
+                     {w + "_normal", w + "_tangential", w + "_effective_normal"},
+                     stem + "_" + w + ".png", "stage " + stage + ": forces on the boundary " + wall,
+                     "time in stage (s)", three_d ? "force (N)" : "force (N per m)", true) &&
+        plotted;
+  }
+  return plotted;
 }
 
 // The probes (output/probes/<name>.csv) against the run's time, one plot per field, and each
@@ -584,6 +618,7 @@ bool plot_time_histories(const fs::path& case_folder, PostFolder& out) {
                            "stage " + stage + ": largest point speed", "time in stage (s)",
                            "speed (m/s)") &&
               plotted;
+    plotted = plot_wall_forces(out, csv, table, stem, stage) && plotted;
   }
   return plotted;
 }

@@ -124,6 +124,37 @@ TEST_F(PostCase, RunoutWallHeightAndProfilesOfASpreadingColumn) {
   }
 }
 
+// The forces on the held boundaries (solver/src/wall_loads.cpp) get one plot per boundary,
+// with exactly its own normal, tangential and (on a contact wall with water) effective normal
+// columns: a boundary named "bed_normal" is a boundary, not the normal force of "bed".
+TEST_F(PostCase, ForcesOnEachHeldBoundaryArePlotted) {
+  write_text(case_ / "output" / "slide_history.csv",
+             "step,time,stage_time,kinetic_energy,wall_bed_force_x,wall_bed_force_y,"
+             "wall_bed_normal,wall_bed_tangential,wall_bed_effective_normal,"
+             "wall_bed_normal_force_x,wall_bed_normal_force_y,wall_bed_normal_normal,"
+             "wall_bed_normal_tangential\n"
+             "10,0.1,0.1,1,2,-9,9,2,5,0,-3,3,0\n"
+             "20,0.2,0.2,2,3,-9,9,3,5,0,-3,3,0\n");
+  const PostResult result = plot_run_histories(case_, case_ / "post", false);
+  const std::string bed = read_text(case_ / "post" / "slide_history_wall_bed.gp");
+  const std::string other = read_text(case_ / "post" / "slide_history_wall_bed_normal.gp");
+  // Columns by position, 1-based: stage_time 3; bed's normal 7, tangential 8, effective 9;
+  // bed_normal's normal 12, tangential 13.
+  for (const char* expected :
+       {"using 3:($7)", "using 3:($8)", "using 3:($9)", "'wall_bed_effective_normal'",
+        "forces on the boundary bed'", "'force (N per m)'"})
+    EXPECT_NE(bed.find(expected), std::string::npos) << expected << "\n" << bed;
+  for (const char* unexpected : {"($12)", "($13)", "($5)"})
+    EXPECT_EQ(bed.find(unexpected), std::string::npos) << unexpected << "\n" << bed;
+  EXPECT_NE(other.find("using 3:($12)"), std::string::npos) << other;
+  EXPECT_NE(other.find("using 3:($13)"), std::string::npos) << other;
+  EXPECT_EQ(other.find("($7)"), std::string::npos) << other;
+  if (gnuplot_available()) {
+    EXPECT_TRUE(result.plots_written);
+    EXPECT_GT(fs::file_size(case_ / "post" / "slide_history_wall_bed.png"), 1000u);
+  }
+}
+
 TEST_F(PostCase, InitialFrontAndReferenceData) {
   write_text(case_ / "reference.csv",
              "time,front_travel,wall_height\n0,0,0.14\n0.32,0.3,0.125\n0.64,,0.08\n");

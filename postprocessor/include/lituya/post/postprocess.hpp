@@ -350,7 +350,8 @@ PostResult postprocess(const std::filesystem::path& case_folder,
 
 // Plots the run's probe tables (output/probes/<name>.csv: probe_<name>_<field>.png against the
 // run time) and stage histories (output/<stage>_history.csv: <stage>_history_kinetic_energy.png,
-// _time_step.png, _max_speed.png against the stage time) into post_folder (refused if it holds
+// _time_step.png, _max_speed.png against the stage time, and <stage>_history_wall_<name>.png
+// with the forces on each held boundary) into post_folder (refused if it holds
 // files, unless `overwrite`). postprocess() draws them too; this serves a case without
 // post.toml. The result lists the files; nothing is written when the run wrote no such table.
 PostResult plot_run_histories(const std::filesystem::path& case_folder,
