@@ -200,6 +200,10 @@ SolverSettings read_solver_settings(const TomlTable& t) {
   s.liquid_pressure = t.choice_or("liquid_pressure", {"points", "nodal_fit"}, "points") == "points"
                           ? LiquidPressure::kPoints
                           : LiquidPressure::kNodalFit;
+  s.pore_pressure_cell_measure =
+      t.choice_or("pore_pressure_cell_measure", {"soil", "water"}, "soil") == "soil"
+          ? PorePressureMeasure::kSoil
+          : PorePressureMeasure::kWater;
   s.liquid_bulk_viscosity =
       t.number_in_or("liquid_bulk_viscosity", 0.0, 1.0, s.liquid_bulk_viscosity);
   // Fractions of a minute are allowed: tests checkpoint a run of seconds.
@@ -412,6 +416,8 @@ toml::table to_toml(const SolverSettings& s) {
     t.insert("pressure_projection_interval", *s.pressure_projection_interval);
   if (s.pressure_projection_time) t.insert("pressure_projection_time", *s.pressure_projection_time);
   if (s.liquid_pressure == LiquidPressure::kNodalFit) t.insert("liquid_pressure", "nodal_fit");
+  if (s.pore_pressure_cell_measure == PorePressureMeasure::kWater)
+    t.insert("pore_pressure_cell_measure", "water");
   return t;
 }
 

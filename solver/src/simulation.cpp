@@ -123,6 +123,9 @@ void Simulation<dim>::resolve_pressure_projection() {
   if (nodal_pressure_)
     line << "; liquid_pressure = \"nodal_fit\": no pressure is projected, the clock runs the pore "
             "water volume projection only";
+  if (settings.pore_pressure_cell_measure == PorePressureMeasure::kWater)
+    line << "; pore_pressure_cell_measure = \"water\": inside a soil the water points weigh "
+            "their pressure by the cell's pores over their own volume";
   projection_description_ = line.str();
 }
 

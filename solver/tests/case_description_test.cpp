@@ -299,6 +299,23 @@ TEST(CaseDescription, PressureProjectionIsCountedInStepsOrInTimeNotBoth) {
   EXPECT_FALSE(timed.pressure_projection_interval.has_value());
 }
 
+TEST(CaseDescription, PorePressureCellMeasureIsSoilOrWater) {
+  // An unknown measure is an error at its line that names the key; "water" is written back
+  // and reads again; the default "soil" is the setting's default.
+  const std::string msg =
+      error_reading_solver_settings("[solver]\n\npore_pressure_cell_measure = \"grains\"\n");
+  EXPECT_NE(msg.find(":3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("pore_pressure_cell_measure"), std::string::npos) << msg;
+  EXPECT_EQ(SolverSettings{}.pore_pressure_cell_measure, PorePressureMeasure::kSoil);
+  SolverSettings s;
+  s.pore_pressure_cell_measure = PorePressureMeasure::kWater;
+  toml::table root;
+  root.insert("solver", to_toml(s));
+  const SolverSettings back = read_solver_settings(
+      *written_and_read(root, "lituya_cell_measure.toml").root().optional_table("solver"));
+  EXPECT_EQ(back.pore_pressure_cell_measure, PorePressureMeasure::kWater);
+}
+
 // stages.toml and materials.toml can be edited by hand between `lituya pre` and `lituya
 // solve`: the case loader applies the same checks as the scene reader, so a stage name that
 // cannot make a file name or a non-finite gravity stops at its line, before any output.

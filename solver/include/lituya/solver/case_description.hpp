@@ -88,6 +88,21 @@ enum class TransferScheme { kMUSL, kUSL };
 //   exerts no force and is not driven. No periodic projection. Experimental (December 2026).
 enum class LiquidPressure { kPoints, kNodalFit };
 
+// Over which volume a soil cell's water points spread the pore pressure they act with
+// (two_phase.cpp, update_pore_pressure_cell_scale; scientific manual 10.4). Inside a soil each
+// point's pressure force, and eq. (8)'s volume change, are weighed so that an even pressure
+// pushes with the cell's own volume, whatever the points' spread. The grains always take the
+// cell's volume over their points' volume sum. The water:
+// - kSoil: the same factor as the grains, |c| / (the soil points' volume sum). Right while the
+//   water points sit where the soil points do; water that crowds the soil's pores pushes out.
+//   The default.
+// - kWater: the cell's pores, n |c| (n the soil points' porosity in the cell), over the water
+//   points' own volume sum. An even pressure then pushes the cell's water with exactly its
+//   pores' volume wherever the water points are (December 2026, stop 31: the pore water
+//   volume projection moves them off the grains, and with kSoil a fine-sand block then lost
+//   its pore pressure as it travelled).
+enum class PorePressureMeasure { kSoil, kWater };
+
 struct SolverSettings {
   TransferScheme scheme = TransferScheme::kMUSL;
   // FLIP/PIC blend. By default the PIC share is set per unit time, not per step, so that
@@ -121,6 +136,7 @@ struct SolverSettings {
   // scientific manual 10.4). A pore can be partly empty (unsaturated), never over-full.
   bool pore_volume_projection = true;
   LiquidPressure liquid_pressure = LiquidPressure::kPoints;
+  PorePressureMeasure pore_pressure_cell_measure = PorePressureMeasure::kSoil;
   // Artificial bulk viscosity of the water (scientific manual 10.5; not in the paper): a
   // viscous pressure -zeta div(v) with zeta = liquid_bulk_viscosity * rho_w c_w h. It acts only
   // on compression, so it damps the sound waves of the weakly compressible water (an artefact

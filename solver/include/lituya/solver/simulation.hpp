@@ -150,6 +150,8 @@ class Simulation {
   // Applies the pore water volume projection now (pore_volume_projection.cpp); for tests.
   // Needs the nodal porosity of a step (or of liquid_to_nodes) before it.
   int project_pore_volume_for_test() { return project_pore_water_volume(); }
+  // Finds the cells of the liquid points again after a test has moved them.
+  void relocate_liquid_for_test();
   // What the material pushes on each boundary condition with (wall_loads.cpp), summed as
   // impulses over the steps since the running stage started or since the last
   // take_wall_impulses(); index i is description().boundaries[i]. Tractions and inactive
@@ -306,6 +308,15 @@ class Simulation {
   // Per cell: |c| / sum of the soil points' volumes in c inside a soil, 1 elsewhere
   // (two_phase.cpp, update_pore_pressure_cell_scale).
   std::vector<double> pore_pressure_cell_scale_;
+  // The water points' factor: pore_pressure_cell_scale_ itself with the "soil" measure; with
+  // "water", n |c| / sum of the water points' volumes in c inside a soil, 1 elsewhere.
+  std::vector<double> pore_water_cell_scale_;
+  std::vector<double> pore_water_cell_volume_;  // scratch: the water points' volume per cell
+  const std::vector<double>& water_cell_scale() const {
+    return description_.solver.pore_pressure_cell_measure == PorePressureMeasure::kWater
+               ? pore_water_cell_scale_
+               : pore_pressure_cell_scale_;
+  }
   std::vector<char> pore_pressure_surface_node_;  // scratch: nodes of cells without soil
   std::vector<char> liquid_in_soil_;              // per liquid point: it is pore water
   std::vector<Vec> pore_water_velocity_, pore_water_acceleration_;
