@@ -58,19 +58,13 @@ BoxScene<2> sand_bed_under_water(double grain_diameter) {
 }
 
 BoxScene<2> still_water_tank(double depth) {
-  BoxScene<2> s;
+  // The sand bed's scene (its water, gravity and roller walls) without the sand.
+  BoxScene<2> s = sand_bed_under_water(0.002);
   s.domain_size = {1.0, 0.6};
   s.cells = {20, 12};
   s.block_min = {2.0, 2.0};  // no soil
   s.block_max = {-1.0, -1.0};
-  s.material = sand_bed_under_water(0.002).material;
-  s.gravity = {0.0, -9.81};
-  s.with_water = true;
-  s.water = paper_water();
-  s.water_min = {0.0, 0.0};
   s.water_max = {1.0, depth};
-  for (const char* side : {"x-", "x+", "y-"})
-    s.boundaries.push_back({side, box_condition(BoundaryType::kRoller)});
   return s;
 }
 

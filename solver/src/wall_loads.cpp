@@ -85,24 +85,24 @@ void Simulation<dim>::collect_wall_nodes() {
   // pseudo-inverse; the rest, across them all (the friction, or the grip of a fixed wall),
   // goes in equal shares to the walls that can take it, or to all where none can. One wall:
   // the plain projection on its normal, and all the rest.
+  const auto grips = [&](const WallEntry& entry) {
+    const NodalConstraint<dim>& c = constraints_[entry.boundary];
+    return c.type == BoundaryType::kFixed || c.type == BoundaryType::kFixity ||
+           (c.type == BoundaryType::kContact && c.friction > 0);
+  };
   for (WallNode& wall_node : wall_nodes_) {
     WallEntry* entries = wall_entries_.data() + wall_node.first;
     const std::size_t count = wall_node.count;
     std::size_t gripping = 0;
     for (std::size_t e = 0; e < count; ++e) {
-      const NodalConstraint<dim>& c = constraints_[entries[e].boundary];
-      gripping += c.type == BoundaryType::kFixed || c.type == BoundaryType::kFixity ||
-                  (c.type == BoundaryType::kContact && c.friction > 0);
-      wall_node.contact |= has_liquid_ && c.type == BoundaryType::kContact;
+      gripping += grips(entries[e]);
+      wall_node.contact |=
+          has_liquid_ && constraints_[entries[e].boundary].type == BoundaryType::kContact;
     }
-    for (std::size_t e = 0; e < count; ++e) {
-      const NodalConstraint<dim>& c = constraints_[entries[e].boundary];
-      const bool grips = c.type == BoundaryType::kFixed || c.type == BoundaryType::kFixity ||
-                         (c.type == BoundaryType::kContact && c.friction > 0);
-      entries[e].tangential_share = gripping == 0
-                                        ? 1.0 / static_cast<double>(count)
-                                        : (grips ? 1.0 / static_cast<double>(gripping) : 0.0);
-    }
+    for (std::size_t e = 0; e < count; ++e)
+      entries[e].tangential_share =
+          gripping == 0 ? 1.0 / static_cast<double>(count)
+                        : (grips(entries[e]) ? 1.0 / static_cast<double>(gripping) : 0.0);
     if (count == 1) continue;
     Normals normals(dim, static_cast<Eigen::Index>(count));
     for (std::size_t e = 0; e < count; ++e)
