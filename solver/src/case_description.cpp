@@ -204,6 +204,9 @@ SolverSettings read_solver_settings(const TomlTable& t) {
       t.choice_or("pore_pressure_cell_measure", {"soil", "water"}, "soil") == "soil"
           ? PorePressureMeasure::kSoil
           : PorePressureMeasure::kWater;
+  s.liquid_advection = t.choice_or("liquid_advection", {"velocity", "flux"}, "velocity") == "flux"
+                           ? LiquidAdvection::kFlux
+                           : LiquidAdvection::kVelocity;
   s.liquid_bulk_viscosity =
       t.number_in_or("liquid_bulk_viscosity", 0.0, 1.0, s.liquid_bulk_viscosity);
   // Fractions of a minute are allowed: tests checkpoint a run of seconds.
@@ -418,6 +421,7 @@ toml::table to_toml(const SolverSettings& s) {
   if (s.liquid_pressure == LiquidPressure::kNodalFit) t.insert("liquid_pressure", "nodal_fit");
   if (s.pore_pressure_cell_measure == PorePressureMeasure::kWater)
     t.insert("pore_pressure_cell_measure", "water");
+  if (s.liquid_advection == LiquidAdvection::kFlux) t.insert("liquid_advection", "flux");
   return t;
 }
 

@@ -126,6 +126,9 @@ void Simulation<dim>::resolve_pressure_projection() {
   if (settings.pore_pressure_cell_measure == PorePressureMeasure::kWater)
     line << "; pore_pressure_cell_measure = \"water\": inside a soil the water points weigh "
             "their pressure by the cell's pores over their own volume";
+  if (settings.liquid_advection == LiquidAdvection::kFlux)
+    line << "; liquid_advection = \"flux\": the liquid points move with the grains plus the "
+            "water's relative volume flux over their cell's pores";
   projection_description_ = line.str();
 }
 
@@ -378,6 +381,7 @@ void Simulation<dim>::step(double dt, double damping) {
                                              pore_water_acceleration_.data()};
     nodes_to_points(water_, mesh_, dt, threads_,
                     [&](std::size_t q) { return liquid_in_soil_[q] ? pore_water : free_water; });
+    if (description_.solver.liquid_advection == LiquidAdvection::kFlux) advect_liquid_by_flux(dt);
   }
   if (musl_) remap_momentum();
   if (volumetric_smoothing_) smooth_volumetric_strain(dt);

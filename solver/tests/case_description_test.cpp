@@ -299,21 +299,36 @@ TEST(CaseDescription, PressureProjectionIsCountedInStepsOrInTimeNotBoth) {
   EXPECT_FALSE(timed.pressure_projection_interval.has_value());
 }
 
-TEST(CaseDescription, PorePressureCellMeasureIsSoilOrWater) {
-  // An unknown measure is an error at its line that names the key; "water" is written back
-  // and reads again; the default "soil" is the setting's default.
+// The [solver] choice keys: a scene whose line 2 sets `key` to `wrong` must fail at that
+// line, naming the key; `settings` (a non-default choice) must survive being written to a
+// case file and read back.
+SolverSettings check_solver_choice(const std::string& key, const std::string& wrong,
+                                   const SolverSettings& settings) {
   const std::string msg =
-      error_reading_solver_settings("[solver]\n\npore_pressure_cell_measure = \"grains\"\n");
-  EXPECT_NE(msg.find(":3"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("pore_pressure_cell_measure"), std::string::npos) << msg;
+      error_reading_solver_settings("[solver]\n" + key + " = \"" + wrong + "\"\n");
+  EXPECT_NE(msg.find(":2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(key), std::string::npos) << msg;
+  toml::table root;
+  root.insert("solver", to_toml(settings));
+  return read_solver_settings(
+      *written_and_read(root, "lituya_" + key + ".toml").root().optional_table("solver"));
+}
+
+TEST(CaseDescription, PorePressureCellMeasureIsSoilOrWater) {
   EXPECT_EQ(SolverSettings{}.pore_pressure_cell_measure, PorePressureMeasure::kSoil);
   SolverSettings s;
   s.pore_pressure_cell_measure = PorePressureMeasure::kWater;
-  toml::table root;
-  root.insert("solver", to_toml(s));
-  const SolverSettings back = read_solver_settings(
-      *written_and_read(root, "lituya_cell_measure.toml").root().optional_table("solver"));
-  EXPECT_EQ(back.pore_pressure_cell_measure, PorePressureMeasure::kWater);
+  EXPECT_EQ(
+      check_solver_choice("pore_pressure_cell_measure", "grains", s).pore_pressure_cell_measure,
+      PorePressureMeasure::kWater);
+}
+
+TEST(CaseDescription, LiquidAdvectionIsVelocityOrFlux) {
+  EXPECT_EQ(SolverSettings{}.liquid_advection, LiquidAdvection::kVelocity);
+  SolverSettings s;
+  s.liquid_advection = LiquidAdvection::kFlux;
+  EXPECT_EQ(check_solver_choice("liquid_advection", "darcy", s).liquid_advection,
+            LiquidAdvection::kFlux);
 }
 
 // stages.toml and materials.toml can be edited by hand between `lituya pre` and `lituya

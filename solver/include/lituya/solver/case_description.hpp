@@ -103,6 +103,17 @@ enum class LiquidPressure { kPoints, kNodalFit };
 //   its pore pressure as it travelled).
 enum class PorePressureMeasure { kSoil, kWater };
 
+// How the liquid points move (Simulation::advect_liquid_by_flux; scientific manual 10.3):
+// - kVelocity: each with its own water field's nodal velocity, interpolated. The default.
+// - kFlux: each with the grains' velocity plus the water's volume flux relative to them,
+//   n (v_w - v_s) interpolated from the nodes, over the pores of its cell's soil (1 for free
+//   water): Darcy's seepage velocity. The two differ only where the nodal porosity varies
+//   across a cell, at a soil's surface: there the grid's porosity ramps over a cell while the
+//   soil's pores do not, and water entering a sand with the field's velocity crowded its top
+//   centimetre (1.24 of its pores in the seepage column) and left the one below under-filled
+//   (December 2026, stop 32).
+enum class LiquidAdvection { kVelocity, kFlux };
+
 struct SolverSettings {
   TransferScheme scheme = TransferScheme::kMUSL;
   // FLIP/PIC blend. By default the PIC share is set per unit time, not per step, so that
@@ -137,6 +148,7 @@ struct SolverSettings {
   bool pore_volume_projection = true;
   LiquidPressure liquid_pressure = LiquidPressure::kPoints;
   PorePressureMeasure pore_pressure_cell_measure = PorePressureMeasure::kSoil;
+  LiquidAdvection liquid_advection = LiquidAdvection::kVelocity;
   // Artificial bulk viscosity of the water (scientific manual 10.5; not in the paper): a
   // viscous pressure -zeta div(v) with zeta = liquid_bulk_viscosity * rho_w c_w h. It acts only
   // on compression, so it damps the sound waves of the weakly compressible water (an artefact

@@ -246,6 +246,7 @@ class Simulation {
                                   Vec& vf, double mp, Vec& vp) const;
   void remap_liquid_momentum();
   void update_liquid_and_relocate(double dt);
+  void advect_liquid_by_flux(double dt);
   // Pressure-projection stabilisation (pressure_projection.cpp); returns CG iterations.
   int project_liquid_pressure();
   // Pore water volume projection (pore_volume_projection.cpp); returns CG iterations.
@@ -312,6 +313,7 @@ class Simulation {
   // "water", n |c| / sum of the water points' volumes in c inside a soil, 1 elsewhere.
   std::vector<double> pore_water_cell_scale_;
   std::vector<double> pore_water_cell_volume_;  // scratch: the water points' volume per cell
+  std::vector<double> cell_soil_volume_, cell_soil_pores_;  // scratch: advect_liquid_by_flux
   const std::vector<double>& water_cell_scale() const {
     return description_.solver.pore_pressure_cell_measure == PorePressureMeasure::kWater
                ? pore_water_cell_scale_
