@@ -853,7 +853,8 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
 // pores at 1 s, and the column drains at 0.94 ("water") and 0.98 ("soil") of Ergun's flux
 // (verification/saturated_block_fine/known-failure.md, stop 32). A rigid motion (v_w = v_s)
 // moves every point with the grains, as before. Not the default: the pond then ends
-// 0.03-0.07 mm outside its band, and the option has not been through the full verification.
+// 0.03-0.2 mm outside its band in three of the four seepage runs (quick and full, both
+// measures), and the option has not been through the full verification.
 template <int dim>
 void Simulation<dim>::advect_liquid_by_flux(double dt) {
   const MaterialPoints<dim>& points = solid_.points;
