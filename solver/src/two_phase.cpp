@@ -383,17 +383,23 @@ void Simulation<dim>::update_pore_pressure_cell_scale() {
   const std::size_t n_cells = mesh_.cell_count();
   const bool water_measure =
       description_.solver.pore_pressure_cell_measure == PorePressureMeasure::kWater;
+  const bool soil_porosity =
+      water_measure || description_.solver.liquid_advection == LiquidAdvection::kFlux;
   // Serial: a few adds per point, and the same bits on any thread count.
   std::vector<double>& scale = pore_pressure_cell_scale_;
-  std::vector<double>& pores = pore_water_cell_scale_;  // the soil's pore volume, then the factor
+  std::vector<double>& porosity_c = cell_soil_porosity_;  // the soil's pore volume, then n_c
   std::fill(scale.begin(), scale.end(), 0.0);
-  if (water_measure) pores.assign(n_cells, 0.0);
+  if (soil_porosity) porosity_c.assign(n_cells, 0.0);
   for (std::size_t p = 0; p < points.size(); ++p) {
     scale[points.cell[p]] += points.volume[p];
-    if (water_measure) pores[points.cell[p]] += points.volume[p] * porosity(p);
+    if (soil_porosity) porosity_c[points.cell[p]] += points.volume[p] * porosity(p);
   }
+  if (soil_porosity)
+    for (std::size_t c = 0; c < n_cells; ++c)
+      porosity_c[c] = scale[c] > 0 ? porosity_c[c] / scale[c] : 1.0;
   std::vector<double>& water = pore_water_cell_volume_;
   if (water_measure) {
+    pore_water_cell_scale_.resize(n_cells);
     const LiquidPoints<dim>& liquid = water_.points;
     water.assign(n_cells, 0.0);
     for (std::size_t q = 0; q < liquid.size(); ++q) water[liquid.cell[q]] += liquid.volume[q];
@@ -408,11 +414,10 @@ void Simulation<dim>::update_pore_pressure_cell_scale() {
     for (int node : mesh_.cell_nodes[c])
       inside = inside && !surface[static_cast<std::size_t>(node)];
     // The water's own measure (PorePressureMeasure::kWater): the cell's pores, |c| times the
-    // soil points' porosity there (their pore volume over their volume), over the water
-    // points' volume sum, in the same cells.
+    // soil points' porosity there, over the water points' volume sum, in the same cells.
     if (water_measure)
-      pores[c] =
-          inside && water[c] > 0 ? mesh_.cell_volume[c] * (pores[c] / scale[c]) / water[c] : 1.0;
+      pore_water_cell_scale_[c] =
+          inside && water[c] > 0 ? mesh_.cell_volume[c] * porosity_c[c] / water[c] : 1.0;
     scale[c] = inside ? mesh_.cell_volume[c] / scale[c] : 1.0;
   }
 }
@@ -857,17 +862,9 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
 // measures), and the option has not been through the full verification.
 template <int dim>
 void Simulation<dim>::advect_liquid_by_flux(double dt) {
-  const MaterialPoints<dim>& points = solid_.points;
   LiquidPoints<dim>& liquid = water_.points;
-  const std::size_t n_cells = mesh_.cell_count();
-  // Serial: a few adds per point, the same bits on any thread count. The points' cells are
-  // those of the step's start, as the liquid points' are here.
-  cell_soil_volume_.assign(n_cells, 0.0);
-  cell_soil_pores_.assign(n_cells, 0.0);
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    cell_soil_volume_[points.cell[p]] += points.volume[p];
-    cell_soil_pores_[points.cell[p]] += points.volume[p] * porosity(p);
-  }
+  // n_c from this step's liquid_to_nodes (update_pore_pressure_cell_scale): the cells are the
+  // step's start ones, for the grains and for these points alike.
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::size_t q = 0; q < liquid.size(); ++q) {
     const int cell = liquid.cell[q];
@@ -882,9 +879,7 @@ void Simulation<dim>::advect_liquid_by_flux(double dt) {
       relative_flux +=
           n(i) * node_porosity_[node] * (mean_water_velocity_[node] - solid_.node_velocity[node]);
     }
-    const double pores = liquid_in_soil_[q] && cell_soil_volume_[cell] > 0
-                             ? cell_soil_pores_[cell] / cell_soil_volume_[cell]
-                             : 1.0;
+    const double pores = cell_soil_porosity_[cell];
     // The walls hold the nodal velocities of each phase, not this blend of them: where the
     // grains lift off a wall at a soil's surface node (porosity above the soil's), the blend
     // can point into the wall. A move that would take the point out of the mesh is not made;

@@ -62,18 +62,20 @@ void run_seepage(const CaseContext& context, CaseResult& result) {
     }
     return d;
   };
-  const Depths first = depths(frames.front()), last = depths(frames.back());
+  std::vector<Depths> at;
+  for (const Frame& f : frames) at.push_back(depths(f));
+  const Depths &first = at.front(), &last = at.back();
   // Drawn, not checked: the chamber also receives what the sand's bottom loses as it drains
   // (its pores under-fill at the outflow, where the water has no tension), so its rise is no
   // cleaner a measure of the flux than the pond's fall (README, stop 32).
   const double d0 = first.pond;
   std::vector<std::vector<double>> rows;
   Depths at_t1{NAN, NAN, NAN};
-  for (const Frame& f : frames) {
-    const Depths d = depths(f);
-    const double ergun = column.depth(d0, f.time);
-    rows.push_back({f.time, d.pond, ergun, d.chamber, d0 - ergun, d.sand - first.sand});
-    if (std::abs(f.time - t1) < 1e-6) at_t1 = d;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const Depths& d = at[k];
+    const double ergun = column.depth(d0, frames[k].time);
+    rows.push_back({frames[k].time, d.pond, ergun, d.chamber, d0 - ergun, d.sand - first.sand});
+    if (std::abs(frames[k].time - t1) < 1e-6) at_t1 = d;
   }
   const double t_end = frames.back().time;
   const double reference_flux = (column.depth(d0, t1) - column.depth(d0, t_end)) / (t_end - t1);

@@ -313,7 +313,9 @@ class Simulation {
   // "water", n |c| / sum of the water points' volumes in c inside a soil, 1 elsewhere.
   std::vector<double> pore_water_cell_scale_;
   std::vector<double> pore_water_cell_volume_;  // scratch: the water points' volume per cell
-  std::vector<double> cell_soil_volume_, cell_soil_pores_;  // scratch: advect_liquid_by_flux
+  // Per cell, with the water's measure or the flux advection: the porosity of the cell's soil
+  // points (their pore volume over their volume), 1 in a cell without soil.
+  std::vector<double> cell_soil_porosity_;
   const std::vector<double>& water_cell_scale() const {
     return description_.solver.pore_pressure_cell_measure == PorePressureMeasure::kWater
                ? pore_water_cell_scale_
