@@ -839,7 +839,7 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
 }
 
 // The liquid points moved by the water's volume flux through the pores, not by their field's
-// velocity ([solver] liquid_advection = "flux"; scientific manual 10.3). Called after
+// velocity ([solver] liquid_advection = "flux"; scientific manual 10.4). Called after
 // nodes_to_points, which moved each point by dt sum_i N_i v_i of its own field; this replaces
 // that move by dt (v_s + sum_i N_i n_i (v_w,i - v_s,i) / n_c), v_s the grains' velocity at
 // the point, v_w the water's mean velocity (eq. 8's), n_i the nodal porosity and n_c the

@@ -103,7 +103,7 @@ enum class LiquidPressure { kPoints, kNodalFit };
 //   its pore pressure as it travelled).
 enum class PorePressureMeasure { kSoil, kWater };
 
-// How the liquid points move (Simulation::advect_liquid_by_flux; scientific manual 10.3):
+// How the liquid points move (Simulation::advect_liquid_by_flux; scientific manual 10.4):
 // - kVelocity: each with its own water field's nodal velocity, interpolated. The default.
 // - kFlux: each with the grains' velocity plus the water's volume flux relative to them,
 //   n (v_w - v_s) interpolated from the nodes, over the pores of its cell's soil (1 for free
