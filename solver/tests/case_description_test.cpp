@@ -236,13 +236,18 @@ TEST(CaseDescription, TractionErrorsNameTheLine) {
 
 namespace {
 
-// Reads a [solver] table that must be rejected; returns the error message.
+// Reads a [solver] table that must be rejected; returns the error message. The file is named
+// after the running test: ctest runs the tests of this file side by side, and with one shared
+// name a test read another's table (or none: a segmentation fault in CI, December 2026).
 std::string error_reading_solver_settings(const std::string& text) {
-  auto path = std::filesystem::temp_directory_path() / "lituya_solver_settings.toml";
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  auto path = std::filesystem::temp_directory_path() / ("lituya_solver_settings_" + test + ".toml");
   std::ofstream(path) << text;
   lituya::TomlDocument doc(path);
+  const std::optional<lituya::TomlTable> solver = doc.root().optional_table("solver");
+  if (!solver) return "no [solver] table in " + path.string();
   try {
-    read_solver_settings(*doc.root().optional_table("solver"));
+    read_solver_settings(*solver);
   } catch (const lituya::InputError& e) {
     return e.what();
   }
