@@ -11,15 +11,25 @@ namespace {
 
 using namespace lituya::solver;
 
+// A file of the running test: ctest runs the tests of this file side by side, and with one
+// shared folder a test read a file another had just rewritten (in CI, December 2026: a
+// [solver] table gone, a segmentation fault). Each test writes into a folder of its own.
+std::filesystem::path test_file(const std::string& name) {
+  const auto folder = std::filesystem::temp_directory_path() / "lituya_case_description_tests" /
+                      ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::filesystem::create_directories(folder);
+  return folder / name;
+}
+
 // Writes `root` as the preprocessor does and reads it back as the solver does.
 lituya::TomlDocument written_and_read(const toml::table& root, const std::string& name) {
-  const auto path = std::filesystem::temp_directory_path() / name;
+  const auto path = test_file(name);
   std::ofstream(path) << root;
   return lituya::TomlDocument(path);
 }
 
 std::string error_reading_material(const std::string& body) {
-  auto path = std::filesystem::temp_directory_path() / "lituya_material_test.toml";
+  auto path = test_file("lituya_material_test.toml");
   std::ofstream(path) << body;
   lituya::TomlDocument doc(path);
   try {
@@ -41,7 +51,7 @@ friction_angle = 30.0
 )";
 
 TEST(CaseDescription, ReadsMaterialWithDefaults) {
-  auto path = std::filesystem::temp_directory_path() / "lituya_material_ok.toml";
+  auto path = test_file("lituya_material_ok.toml");
   std::ofstream(path) << kSand;
   lituya::TomlDocument doc(path);
   Material m = read_material(doc.root().tables("material").at(0));
@@ -74,7 +84,7 @@ TEST(CaseDescription, MaterialErrorsNameFileAndLine) {
 }
 
 TEST(CaseDescription, StageReferencingUnknownBoundaryIsAnError) {
-  auto path = std::filesystem::temp_directory_path() / "lituya_stage_test.toml";
+  auto path = test_file("lituya_stage_test.toml");
   std::ofstream(path) << "[[boundary]]\ngroup = \"bed\"\ntype = \"fixed\"\n\n[[stage]]\n"
                          "name = \"go\"\ntype = \"dynamic\"\nduration = 1.0\n"
                          "boundaries = [\"bed\", \"gate\"]\n";
@@ -96,7 +106,7 @@ TEST(CaseDescription, StageReferencingUnknownBoundaryIsAnError) {
 }
 
 TEST(CaseDescription, FixityDirectionMustExistInDimension) {
-  auto path = std::filesystem::temp_directory_path() / "lituya_fixity_test.toml";
+  auto path = test_file("lituya_fixity_test.toml");
   std::ofstream(path)
       << "[[boundary]]\ngroup = \"gate\"\ntype = \"fixity\"\ndirections = [\"z\"]\n";
   lituya::TomlDocument doc(path);
@@ -117,7 +127,7 @@ viscosity = 1.0e-3
 )";
 
 TEST(CaseDescription, ReadsWaterAndMaxPorosity) {
-  auto path = std::filesystem::temp_directory_path() / "lituya_water_ok.toml";
+  auto path = test_file("lituya_water_ok.toml");
   std::ofstream(path) << kWater << "\n" << kSand << "max_porosity = 0.5\n";
   lituya::TomlDocument doc(path);
   auto tables = doc.root().tables("material");
@@ -173,7 +183,7 @@ TEST(CaseDescription, WaterErrorsNameFileAndLine) {
 namespace {
 
 std::string error_reading_boundary(const std::string& body, int dimension) {
-  auto path = std::filesystem::temp_directory_path() / "lituya_boundary_test.toml";
+  auto path = test_file("lituya_boundary_test.toml");
   std::ofstream(path) << body;
   lituya::TomlDocument doc(path);
   try {
@@ -185,7 +195,7 @@ std::string error_reading_boundary(const std::string& body, int dimension) {
 }
 
 TEST(CaseDescription, TractionAndPhaseBoundaries) {
-  auto path = std::filesystem::temp_directory_path() / "lituya_traction_ok.toml";
+  auto path = test_file("lituya_traction_ok.toml");
   std::ofstream(path) << "[[boundary]]\ngroup = \"top\"\ntype = \"traction\"\n"
                          "traction = [0.0, -1.0e4]\n\n"
                          "[[boundary]]\ngroup = \"plate\"\ntype = \"fixed\"\nphase = \"solid\"\n";
@@ -236,12 +246,9 @@ TEST(CaseDescription, TractionErrorsNameTheLine) {
 
 namespace {
 
-// Reads a [solver] table that must be rejected; returns the error message. The file is named
-// after the running test: ctest runs the tests of this file side by side, and with one shared
-// name a test read another's table (or none: a segmentation fault in CI, December 2026).
+// Reads a [solver] table that must be rejected; returns the error message.
 std::string error_reading_solver_settings(const std::string& text) {
-  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  auto path = std::filesystem::temp_directory_path() / ("lituya_solver_settings_" + test + ".toml");
+  auto path = test_file("lituya_solver_settings.toml");
   std::ofstream(path) << text;
   lituya::TomlDocument doc(path);
   const std::optional<lituya::TomlTable> solver = doc.root().optional_table("solver");
