@@ -77,7 +77,7 @@ range START:STOP:STEP; write --values=-5,0,5 when the first value is negative. S
 repeat --parameter KEY --values ... per key; --combine grid (default) runs every combination,
 --combine zip the i-th values of every key together. Measures: gauge_first_crest[:GAUGE],
 gauge_first_wave_area[:GAUGE], gauge_max[:GAUGE], leading_wave_max, front_travel_final,
-front_travel_max, wall_height_final, wall_height_max, kinetic_energy_solid_max,
+front_travel_max, mass_front_travel_final, wall_height_final, wall_height_max, kinetic_energy_solid_max,
 kinetic_energy_liquid_max (default: gauge_first_crest at every gauge, else
 front_travel_final). DIR
 defaults to sweep_<KEY> next to the scene (several keys joined by '+'; for a sweep file: its

@@ -27,6 +27,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The share of the tracked mass behind the mass front (runout.csv's mass_front_*): the front of
+// the mass, less the 1 % that a run throws ahead as a thin tail or stray grains.
+constexpr double kMassFrontShare = 0.99;
+
 // A table gathered in memory and written whole by close(), through the project's CSV writer
 // (RFC 4180 quoting, numbers that read back exactly, a blank field for "no value" as in the
 // reference CSV, so that a time at which no front could be found plots as a gap rather than as
@@ -233,6 +237,8 @@ bool measure_slide(const PostSettings& settings, const SlideInput& input,
     result.time.push_back(series[k].time);
     result.front_position.push_back(
         front_position(cloud, input.tracked, input.frame, settings.bin_width, settings.min_points));
+    result.mass_front_position.push_back(
+        mass_front_position(cloud, input.tracked, input.frame, kMassFrontShare));
     result.wall_height.push_back(wall_height(cloud, input.tracked, input.frame,
                                              settings.wall_position, settings.bin_width,
                                              settings.min_points));
@@ -243,16 +249,20 @@ bool measure_slide(const PostSettings& settings, const SlideInput& input,
   }
   const double start_front = settings.initial_front.value_or(result.front_position.front());
   for (double front : result.front_position) result.front_travel.push_back(front - start_front);
+  for (double front : result.mass_front_position)
+    result.mass_front_travel.push_back(front - result.mass_front_position.front());
 
   // Tables.
   const fs::path runout_csv = out.file("runout.csv");
   const fs::path wall_csv = out.file("wall_height.csv");
   const fs::path profiles_csv = out.file("profiles.csv");
   {
-    CsvFile runout(runout_csv, {"time", "front_position", "front_travel"});
+    CsvFile runout(runout_csv, {"time", "front_position", "front_travel", "mass_front_position",
+                                "mass_front_travel"});
     CsvFile wall(wall_csv, {"time", "wall_height"});
     for (size_t k = 0; k < result.time.size(); ++k) {
-      runout.row(result.time[k], result.front_position[k], result.front_travel[k]);
+      runout.row(result.time[k], result.front_position[k], result.front_travel[k],
+                 result.mass_front_position[k], result.mass_front_travel[k]);
       wall.row(result.time[k], result.wall_height[k]);
     }
     runout.close();
@@ -295,6 +305,9 @@ bool measure_slide(const PostSettings& settings, const SlideInput& input,
   // Plots.
   const std::string stage = " (stage '" + settings.stage + "')";
   std::vector<PlotSeries> runout_series{{runout_csv, 1, 3, "Lituya (MPM)"}};
+  if (std::any_of(result.mass_front_travel.begin(), result.mass_front_travel.end(),
+                  [](double v) { return std::isfinite(v); }))
+    runout_series.push_back({runout_csv, 1, 5, "Lituya, front of 99 % of the mass"});
   std::vector<PlotSeries> wall_series{{wall_csv, 1, 2, "Lituya (MPM)"}};
   if (input.reference) {
     runout_series.push_back({reference_runout_csv, 1, 2, "reference", true});

@@ -187,6 +187,10 @@ PointCloud read_cloud(const fs::path& vtu, int dimension, bool liquid) {
     cloud.volume.resize(n);
     for (vtkIdType i = 0; i < n; ++i) cloud.volume[i] = a->GetTuple1(i);
   }
+  if (vtkDataArray* a = scalar_array("mass")) {
+    cloud.mass.resize(n);
+    for (vtkIdType i = 0; i < n; ++i) cloud.mass[i] = a->GetTuple1(i);
+  }
   if (vtkDataArray* a = scalar_array("id")) {
     cloud.id.resize(n);
     for (vtkIdType i = 0; i < n; ++i) cloud.id[i] = static_cast<int>(a->GetTuple1(i));

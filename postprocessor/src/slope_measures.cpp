@@ -1,8 +1,11 @@
 // Front, thickness and wall height of the sliding mass, measured in the slope frame.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "lituya/post/postprocess.hpp"
 
@@ -82,6 +85,26 @@ double front_position(const PointCloud& points, const std::vector<bool>& tracked
        next = bins.find(last + 1))
     last = next->first;
   return static_cast<double>(last + 1) * bin_width;
+}
+
+double mass_front_position(const PointCloud& points, const std::vector<bool>& tracked_material,
+                           const SlopeFrame& frame, double share) {
+  std::vector<std::pair<double, double>> by_s;  // (s, mass) of the tracked points
+  double total = 0;
+  if (points.mass.size() == points.position.size())
+    for (size_t i = 0; i < points.position.size(); ++i)
+      if (is_tracked(points, tracked_material, i)) {
+        by_s.emplace_back(frame.s(points.position[i]), points.mass[i]);
+        total += points.mass[i];
+      }
+  if (!(total > 0)) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(by_s.begin(), by_s.end());
+  double behind = 0;
+  for (const auto& [s, mass] : by_s) {
+    behind += mass;
+    if (behind >= share * total) return s;
+  }
+  return by_s.back().first;  // rounding: the sum fell short of share * total by an ulp
 }
 
 std::vector<ProfileBin> thickness_profile(const PointCloud& points,

@@ -80,6 +80,51 @@ class PostCase : public synthetic::CaseFolderTest {
   }
 };
 
+// The same column with masses (an untracked bed of heavy points under it), and at the last
+// output one grain of a hundredth of the column's mass flung 2 m ahead. The points sit at the
+// centres of 5 mm columns of equal mass, so 99 % of a column N columns long is reached in its
+// ceil(0.99 N)-th column: at 0.1975 and 0.2975 m for 0.2 and 0.3 m; with the grain, 99 % of
+// 1.01 column masses is reached only in the last column, 0.4975 m, not at the grain.
+TEST_F(PostCase, MassFrontIsWhere99PercentOfTheTrackedMassLies) {
+  SlopeFrame frame(Eigen::Vector3d(0.3, 0.5, 0.0), 22.0);
+  PvdWriter pvd(case_ / "output" / "release_points.pvd");
+  for (int k = 0; k < 3; ++k) {
+    PointCloud cloud;
+    add_block(cloud, frame, 0.0, kLength[k], 0.0, kHeight[k], 0.005, 0);
+    double column_mass = 0;
+    for (double v : cloud.volume) {
+      cloud.mass.push_back(1500.0 * v);
+      column_mass += 1500.0 * v;
+    }
+    add_block(cloud, frame, -0.1, 1.0, -0.01, 0.0, 0.005, 1);  // the untracked bed
+    cloud.mass.resize(cloud.volume.size(), 1e6);               // heavy, but not tracked
+    if (k == 2) {
+      cloud.position.push_back(frame.point(2.5, 0.01));
+      cloud.material.push_back(0);
+      cloud.volume.push_back(0.005 * 0.005);
+      cloud.mass.push_back(0.01 * column_mass);
+      cloud.id.push_back(static_cast<int>(cloud.id.size()));
+    }
+    char name[64];
+    std::snprintf(name, sizeof name, "release_points_%04d.vtu", k);
+    synthetic::write_cloud(cloud, case_ / "output" / name);
+    pvd.add(kTimes[k], name);
+  }
+  PostResult result = postprocess(case_, case_ / "post", false);
+  ASSERT_EQ(result.mass_front_position.size(), 3u);
+  const double expected[3] = {0.1975, 0.2975, 0.4975};
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(result.mass_front_position[k], expected[k], 1e-9) << "t = " << kTimes[k];
+  EXPECT_NEAR(result.mass_front_travel[0], 0.0, 1e-12);
+  EXPECT_NEAR(result.mass_front_travel[2], 0.3, 1e-9);
+  auto runout = read_csv_rows(case_ / "post" / "runout.csv");
+  ASSERT_EQ(runout.size(), 3u);
+  EXPECT_DOUBLE_EQ(runout[2][3], result.mass_front_position[2]);
+  EXPECT_DOUBLE_EQ(runout[2][4], result.mass_front_travel[2]);
+  EXPECT_NE(read_text(case_ / "post" / "runout.gp").find("front of 99 % of the mass"),
+            std::string::npos);
+}
+
 TEST_F(PostCase, RunoutWallHeightAndProfilesOfASpreadingColumn) {
   PostResult result = postprocess(case_, case_ / "post", false);
 
@@ -91,8 +136,13 @@ TEST_F(PostCase, RunoutWallHeightAndProfilesOfASpreadingColumn) {
     EXPECT_NEAR(runout[k][2], kLength[k] - 0.2, 1e-9) << "travel at t = " << kTimes[k];
     EXPECT_NEAR(result.front_travel[k], kLength[k] - 0.2, 1e-9);
   }
-  EXPECT_EQ(read_text(case_ / "post" / "runout.csv").substr(0, 35),
-            "time,front_position,front_travel\n0,");
+  EXPECT_EQ(read_text(case_ / "post" / "runout.csv").substr(0, 73),
+            "time,front_position,front_travel,mass_front_position,mass_front_travel\n0,");
+  // These outputs carry no masses: the mass front is blank, not a number made up.
+  for (int k = 0; k < 3; ++k) {
+    ASSERT_EQ(runout[k].size(), 5u);
+    EXPECT_TRUE(std::isnan(runout[k][3]) && std::isnan(runout[k][4]));
+  }
 
   auto wall = read_csv_rows(case_ / "post" / "wall_height.csv");
   ASSERT_EQ(wall.size(), 3u);

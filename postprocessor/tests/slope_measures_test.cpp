@@ -56,6 +56,26 @@ TEST(FrontPosition, BlockEndInsideABinIsFoundWithinOneBin) {
   EXPECT_LE(front - 0.215, kBin);
 }
 
+// Four tracked points of 1, 1, 1 and 97 kg (a heavy last one) and an untracked one far
+// ahead: 99 % of the 100 kg is reached only at the heavy point; at a share of 0.03 at the
+// third point; the untracked point never counts, however heavy; no masses, no front.
+TEST(MassFrontPosition, WeighsTrackedPointsByTheirMass) {
+  SlopeFrame frame(kOrigin, kSlope);
+  PointCloud cloud;
+  const double s[5] = {0.1, 0.2, 0.3, 0.4, 3.0}, mass[5] = {1, 1, 1, 97, 1e6};
+  for (int i = 0; i < 5; ++i) {
+    cloud.position.push_back(frame.point(s[i], 0.01));
+    cloud.material.push_back(i < 4 ? 0 : 1);
+    cloud.volume.push_back(kSpacing * kSpacing);
+  }
+  EXPECT_TRUE(std::isnan(mass_front_position(cloud, {true, false}, frame, 0.99)));
+  cloud.mass.assign(mass, mass + 5);
+  EXPECT_NEAR(mass_front_position(cloud, {true, false}, frame, 0.99), 0.4, 1e-12);
+  EXPECT_NEAR(mass_front_position(cloud, {true, false}, frame, 0.03), 0.3, 1e-12);
+  EXPECT_NEAR(mass_front_position(cloud, {true, true}, frame, 0.5), 3.0, 1e-12);
+  EXPECT_TRUE(std::isnan(mass_front_position(cloud, {false, false}, frame, 0.99)));
+}
+
 TEST(FrontPosition, OnlyTrackedMaterialsCount) {
   SlopeFrame frame(kOrigin, kSlope);
   PointCloud cloud;

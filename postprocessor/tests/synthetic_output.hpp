@@ -49,6 +49,7 @@ inline void write_cloud(const PointCloud& cloud, const std::filesystem::path& fi
     writer.add_point_data("material", material);
   }
   if (!cloud.volume.empty()) writer.add_point_data("volume", 1, cloud.volume);
+  if (!cloud.mass.empty()) writer.add_point_data("mass", 1, cloud.mass);
   if (!cloud.id.empty()) {
     std::vector<std::int32_t> id(cloud.id.begin(), cloud.id.end());
     writer.add_point_data("id", id);

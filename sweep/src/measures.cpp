@@ -38,6 +38,7 @@ constexpr Kind kKinds[] = {
     {"leading_wave_max", "leading_wave.csv", "crest_height", Reduction::kMax, Kind::kLeadingWave},
     {"front_travel_final", "runout.csv", "front_travel", Reduction::kLast, Kind::kSlide},
     {"front_travel_max", "runout.csv", "front_travel", Reduction::kMax, Kind::kSlide},
+    {"mass_front_travel_final", "runout.csv", "mass_front_travel", Reduction::kLast, Kind::kSlide},
     {"wall_height_final", "wall_height.csv", "wall_height", Reduction::kLast, Kind::kSlide},
     {"wall_height_max", "wall_height.csv", "wall_height", Reduction::kMax, Kind::kSlide},
     {"kinetic_energy_solid_max", nullptr, "kinetic_energy_solid", Reduction::kMax, Kind::kHistory,

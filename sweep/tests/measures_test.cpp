@@ -38,8 +38,9 @@ TEST(Measures, ReadFromThePostTables) {
                                         "0.6,0.011,0.021\n"
                                         "0.7,0.010,0.022\n"
                                         "0.8,0.010,0.023\n";
-  std::ofstream(post / "runout.csv") << "time,front_position,front_travel\n0,0.2,0\n0.5,0.4,0.2\n"
-                                        "1.0,0.45,0.25\n";
+  std::ofstream(post / "runout.csv")
+      << "time,front_position,front_travel,mass_front_position,mass_front_travel\n"
+         "0,0.2,0,0.19,0\n0.5,0.4,0.2,0.36,0.17\n1.0,0.45,0.25,0.4,0.21\n";
   std::ofstream(post / "leading_wave.csv") << "time,crest_x,crest_height,max_eta\n0,,,0.001\n"
                                               "0.5,1.2,0.031,0.04\n1.0,1.8,0.027,0.03\n";
   const PostContent content = post_of(
@@ -60,6 +61,10 @@ TEST(Measures, ReadFromThePostTables) {
   EXPECT_DOUBLE_EQ(take_measure(measures[3], post), 0.031);
   EXPECT_DOUBLE_EQ(take_measure(measures[4], post), 0.25);
   EXPECT_DOUBLE_EQ(take_measure(measures[5], post), 0.25);
+  // The mass front's travel is its own column, not the bin front's.
+  const auto mass_front = parse_measures({"mass_front_travel_final"}, content, "scene.toml");
+  ASSERT_EQ(mass_front.size(), 1u);
+  EXPECT_DOUBLE_EQ(take_measure(mass_front[0], post), 0.21);
 
   // The area of G1's first wave: the trapezoid 0.1-0.2 s and the triangle out to its fall
   // through still water between 0.2 s (0.012) and 0.3 s (-0.001); the blank first row is no

@@ -64,18 +64,10 @@ Measured run_one(const CaseContext& context, const std::string& scene_name,
       if (position[3 * p] > r.front_position.back() + 2 * cell_size) ahead += mass[p];
     }
     m.tail_fraction = total > 0 ? ahead / total : NAN;
-    std::vector<std::pair<double, double>> by_x;  // (x, mass)
-    for (std::size_t p = 0; p < mass.size(); ++p) by_x.emplace_back(position[3 * p], mass[p]);
-    std::sort(by_x.begin(), by_x.end());
-    double behind = 0;
-    for (const auto& [x, point_mass] : by_x) {
-      behind += point_mass;
-      if (behind >= 0.99 * total) {
-        m.mass_runout = (x - kColumnWidth) / kColumnWidth;
-        break;
-      }
-    }
   }
+  // lituya post's front of 99 % of the mass; the slope frame of this scene is x itself.
+  if (!r.mass_front_position.empty())
+    m.mass_runout = (r.mass_front_position.back() - kColumnWidth) / kColumnWidth;
 
   const std::string at =
       " (" + folder_name + ", h = " + std::to_string(cell_size).substr(0, 5) + " m)";

@@ -92,6 +92,7 @@ struct PointCloud {
   std::vector<Eigen::Vector3d> position;
   std::vector<int> material;   // id in materials.toml
   std::vector<double> volume;  // m3 (m2 per metre in 2D)
+  std::vector<double> mass;    // kg (kg per metre in 2D), when written
   std::vector<int> id;         // index of the point in the case's points.vtu
   // Liquid points only (read_liquid_points): porosity n of the mixture the point is water
   // of, 1 for free water; its `volume` is the water volume, n times the mixture volume.
@@ -141,6 +142,14 @@ class SlopeFrame {
 // no bin qualifies.
 double front_position(const PointCloud& points, const std::vector<bool>& tracked_material,
                       const SlopeFrame& frame, double bin_width, int min_points);
+
+// The front of the tracked mass: the smallest s below which `share` (e.g. 0.99) of the tracked
+// points' mass lies. Unlike front_position it weighs each point by its mass, so a few grains
+// thrown ahead, or a layer thinner than the bins' point count, move it by their mass only: it
+// converges with the cell size where front_position, which follows the thinnest layer a bin
+// still counts, does not (verification/column_collapse). NaN without masses or tracked points.
+double mass_front_position(const PointCloud& points, const std::vector<bool>& tracked_material,
+                           const SlopeFrame& frame, double share);
 
 // Thickness of one bin: s is the bin centre.
 struct ProfileBin {
@@ -312,6 +321,9 @@ struct TimedSurface {
 struct PostResult {
   // Slide measures; empty when track_materials is absent.
   std::vector<double> time, front_position, front_travel, wall_height;
+  // The front of 99 % of the tracked mass (mass_front_position), and its travel from where it
+  // stood at the first output; NaN where the points carry no mass field.
+  std::vector<double> mass_front_position, mass_front_travel;
   std::vector<TimedProfile> profiles;
 
   // Water measures, one value per liquid output; empty when no gauges and no leading wave

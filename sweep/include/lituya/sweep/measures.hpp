@@ -10,6 +10,9 @@
 //   leading_wave_max           highest crest_height of the leading wave (leading_wave.csv)
 //   front_travel_final         front_travel at the last output (runout.csv)
 //   front_travel_max           highest front_travel (runout.csv)
+//   mass_front_travel_final    mass_front_travel at the last output (runout.csv): how far the
+//                              front of 99 % of the slide's mass has moved, a measure that
+//                              converges with the cell size where front_travel may not
 //   wall_height_final          wall_height at the last output (wall_height.csv)
 //   wall_height_max            highest wall_height (wall_height.csv)
 //   kinetic_energy_solid_max   highest kinetic energy of the solid points, J (J/m in 2D),
