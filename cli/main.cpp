@@ -77,10 +77,9 @@ range START:STOP:STEP; write --values=-5,0,5 when the first value is negative. S
 repeat --parameter KEY --values ... per key; --combine grid (default) runs every combination,
 --combine zip the i-th values of every key together. Measures: gauge_first_crest[:GAUGE],
 gauge_first_wave_area[:GAUGE], gauge_max[:GAUGE], leading_wave_max, front_travel_final,
-front_travel_max, mass_front_travel_final, wall_height_final, wall_height_max, kinetic_energy_solid_max,
-kinetic_energy_liquid_max (default: gauge_first_crest at every gauge, else
-front_travel_final). DIR
-defaults to sweep_<KEY> next to the scene (several keys joined by '+'; for a sweep file: its
+front_travel_max, mass_front_travel_final, wall_height_final, wall_height_max,
+kinetic_energy_solid_max, kinetic_energy_liquid_max (default: gauge_first_crest at every
+gauge, else front_travel_final). DIR defaults to sweep_<KEY> next to the scene (several keys joined by '+'; for a sweep file: its
 name without .toml). --dry-run checks every scene copy and measure and lists the runs without
 running them. --jobs N runs N runs side by side, each in a process of its own with one thread
 unless --threads says otherwise (the same results as one after another). --resume continues
