@@ -74,21 +74,22 @@ const char* kSweepDetails =
     R"(KEY is a dotted path to one value of the scene, e.g. material.beads.friction_angle,
 stage.release.courant, mesh.cell_size ([[...]] entries by name or group). A value may be a
 range START:STOP:STEP; write --values=-5,0,5 when the first value is negative. Several keys:
-repeat --parameter KEY --values ... per key; --combine grid (default) runs every combination,
---combine zip the i-th values of every key together. Measures: gauge_first_crest[:GAUGE],
-gauge_first_wave_area[:GAUGE], gauge_max[:GAUGE], leading_wave_max, front_travel_final,
-front_travel_max, mass_front_travel_final, wall_height_final, wall_height_max,
-kinetic_energy_solid_max, kinetic_energy_liquid_max (default: gauge_first_crest at every
-gauge, else front_travel_final). DIR defaults to sweep_<KEY> next to the scene (several keys joined by '+'; for a sweep file: its
-name without .toml). --dry-run checks every scene copy and measure and lists the runs without
-running them. --jobs N runs N runs side by side, each in a process of its own with one thread
-unless --threads says otherwise (the same results as one after another). --resume continues
-a stopped sweep in DIR: a run whose scene copy is unchanged and whose solve completed on the
-same case files is kept, not run again. A run whose first stages read the same inputs as those
-of a run that finished (a key that only a later stage reads) starts from that run's
-end-of-stage checkpoint instead of running them again, with the same results to the last bit;
---no-reuse runs every run whole. Exit code 5: at least one run of the sweep failed
-(the table marks it; the others are complete).)";
+repeat --parameter KEY --values ... per key; --combine grid (default) runs every
+combination, --combine zip the i-th values of every key together. Measures:
+gauge_first_crest[:GAUGE], gauge_first_wave_area[:GAUGE], gauge_max[:GAUGE],
+leading_wave_max, front_travel_final, front_travel_max, mass_front_travel_final,
+wall_height_final, wall_height_max, kinetic_energy_solid_max, kinetic_energy_liquid_max
+(default: gauge_first_crest at every gauge, else front_travel_final). DIR defaults to
+sweep_<KEY> next to the scene (several keys joined by '+'; for a sweep file: its name
+without .toml). --dry-run checks every scene copy and measure and lists the runs without
+running them. --jobs N runs N runs side by side, each in a process of its own with one
+thread unless --threads says otherwise (the same results as one after another). --resume
+continues a stopped sweep in DIR: a run whose scene copy is unchanged and whose solve
+completed on the same case files is kept, not run again. A run whose first stages read the
+same inputs as those of a run that finished (a key that only a later stage reads) starts
+from that run's end-of-stage checkpoint instead of running them again, with the same results
+to the last bit; --no-reuse runs every run whole. Exit code 5: at least one run of the sweep
+failed (the table marks it; the others are complete).)";
 
 const std::vector<std::string> kCommands = {"pre", "solve", "post", "run", "verify", "sweep"};
 
