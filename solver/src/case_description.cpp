@@ -204,6 +204,7 @@ SolverSettings read_solver_settings(const TomlTable& t) {
       t.choice_or("pore_pressure_cell_measure", {"soil", "water"}, "soil") == "soil"
           ? PorePressureMeasure::kSoil
           : PorePressureMeasure::kWater;
+  s.free_water_cell_volume = t.boolean_or("free_water_cell_volume", s.free_water_cell_volume);
   s.liquid_advection = t.choice_or("liquid_advection", {"velocity", "flux"}, "velocity") == "flux"
                            ? LiquidAdvection::kFlux
                            : LiquidAdvection::kVelocity;
@@ -409,6 +410,7 @@ toml::table to_toml(const SolverSettings& s) {
                 {"max_velocity", s.max_velocity},
                 {"volumetric_smoothing", s.volumetric_smoothing},
                 {"pore_volume_projection", s.pore_volume_projection},
+                {"free_water_cell_volume", s.free_water_cell_volume},
                 {"liquid_bulk_viscosity", s.liquid_bulk_viscosity},
                 {"checkpoint_interval_minutes", s.checkpoint_interval_minutes}};
   // Only the blend settings the scene gave: absent ones keep their automatic defaults.

@@ -310,18 +310,22 @@ class Simulation {
   // (two_phase.cpp, update_pore_pressure_cell_scale).
   std::vector<double> pore_pressure_cell_scale_;
   // The water points' factor: pore_pressure_cell_scale_ itself with the "soil" measure; with
-  // "water", n |c| / sum of the water points' volumes in c inside a soil, 1 elsewhere.
+  // "water", n |c| / sum of the water points' volumes in c inside a soil, 1 elsewhere. With
+  // free_water_cell_volume also |c| / sum of the water points' volumes in free water's
+  // interior cells (none of whose nodes touches a cell without water).
   std::vector<double> pore_water_cell_scale_;
   std::vector<double> pore_water_cell_volume_;  // scratch: the water points' volume per cell
   // Per cell, with the water's measure or the flux advection: the porosity of the cell's soil
   // points (their pore volume over their volume), 1 in a cell without soil.
   std::vector<double> cell_soil_porosity_;
   const std::vector<double>& water_cell_scale() const {
-    return description_.solver.pore_pressure_cell_measure == PorePressureMeasure::kWater
+    return description_.solver.pore_pressure_cell_measure == PorePressureMeasure::kWater ||
+                   description_.solver.free_water_cell_volume
                ? pore_water_cell_scale_
                : pore_pressure_cell_scale_;
   }
   std::vector<char> pore_pressure_surface_node_;  // scratch: nodes of cells without soil
+  std::vector<char> water_surface_node_;          // scratch: nodes of cells without water
   std::vector<char> liquid_in_soil_;              // per liquid point: it is pore water
   std::vector<Vec> pore_water_velocity_, pore_water_acceleration_;
   std::vector<Vec> mean_water_velocity_;  // mass-weighted mean of the two (eq. 8's flux)
