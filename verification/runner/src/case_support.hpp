@@ -109,5 +109,6 @@ void run_dam_break_late(const CaseContext& context, CaseResult& result);
 void run_terzaghi(const CaseContext& context, CaseResult& result);
 void run_seepage(const CaseContext& context, CaseResult& result);
 void run_sponge(const CaseContext& context, CaseResult& result);
+void run_standing_wave(const CaseContext& context, CaseResult& result);
 
 }  // namespace lituya::verify

@@ -61,6 +61,8 @@ const std::vector<CaseEntry>& all_cases() {
       {"terzaghi", "Terzaghi 1D consolidation", run_terzaghi},
       {"seepage", "Seepage through a sand column (Darcy-Forchheimer)", run_seepage},
       {"sponge", "A long wave leaving a tank through a sponge zone", run_sponge},
+      {"standing_wave", "Standing wave in a tank: period and damping of a resolved wave",
+       run_standing_wave},
       {"extremes", "Stability at the extremes of the inputs", run_extremes},
       // A folder of its own, so that its known failure does not excuse the group's checks.
       {"extremes/impact", "Stability at the extremes: a slide's impact at 16 points per cell",
