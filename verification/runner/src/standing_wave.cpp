@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "case_support.hpp"
 #include "lituya/post/plot.hpp"
@@ -36,7 +38,7 @@ Record run_tank(const CaseContext& context, const std::string& scene, const std:
 // The three checks of README.md on one run; `label` names the run in the quantities.
 StandingWaveFit check_tank(CaseResult& result, const Record& r, double linear_period,
                            const std::string& label) {
-  const StandingWaveFit fit = fit_standing_wave(r.time, r.amplitude);
+  StandingWaveFit fit = fit_standing_wave(r.time, r.amplitude);
   double sinking = 0;  // the largest fall of the centroid below its height at the release
   for (double y : r.centroid) sinking = std::max(sinking, r.centroid.front() - y);
   // Tolerances and why: README.md.

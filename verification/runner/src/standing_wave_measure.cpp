@@ -1,5 +1,6 @@
 #include "standing_wave_measure.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
