@@ -9,7 +9,8 @@ to be read off the points. The runner (verification/runner/src/standing_wave.cpp
 same; this script serves studies over cases run by `lituya run` or `lituya sweep`.
 
 usage: modal_amplitude.py [--length L] CASE_FOLDER [CASE_FOLDER ...]   (prints the amplitude at
-the release, the period against linear theory, the height lost per period and the extremes;
+the release, the period against linear theory, the height lost per period, the largest fall of
+the water's volume centroid sum V y / sum V and the extremes;
 --length: the tank's length, 0.5 m unless given, for copies of tank.geo with another L)
 """
 import glob
@@ -32,7 +33,7 @@ def record(case):
         times.append(float(m.group(1)))
         files.append(os.path.join(case, "output", m.group(2)))
     reader = vtk.vtkXMLUnstructuredGridReader()
-    amplitude = []
+    amplitude, centroid = [], []
     for f in files:
         reader.SetFileName(f)
         reader.Update()
@@ -40,7 +41,9 @@ def record(case):
         x = vtk_to_numpy(grid.GetPoints().GetData())[:, 0]
         v = vtk_to_numpy(grid.GetPointData().GetArray("volume"))
         amplitude.append(2 / L * np.sum(v * np.cos(math.pi / L * x)))
-    return np.array(times), np.array(amplitude)
+        y = vtk_to_numpy(grid.GetPoints().GetData())[:, 1]
+        centroid.append(np.sum(v * y) / np.sum(v))
+    return np.array(times), np.array(amplitude), np.array(centroid)
 
 
 def analyse(t, a):
@@ -78,10 +81,12 @@ def main():
     k = math.pi / L
     T_LINEAR = 2 * math.pi / math.sqrt(G * k * math.tanh(k * H))
     for case in args:
-        t, a = record(case)
+        t, a, c = record(case)
         period, decay, te, ae = analyse(t, a)
+        fall = 1000 * np.max(c[0] - c)
         print(f"{case}: A0 {a[0]*1000:.3f} mm, period {period:.4f} s = {period / T_LINEAR:.4f} T_linear "
-              f"({T_LINEAR:.4f} s), decay per period {100 * decay:.2f} %, extremes "
+              f"({T_LINEAR:.4f} s), decay per period {100 * decay:.2f} %, "
+              f"largest fall of the volume centroid {fall:.2f} mm, extremes "
               + " ".join(f"{x*1000:.2f}" for x in ae))
 
 
