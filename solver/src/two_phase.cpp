@@ -77,6 +77,25 @@ double drag_coefficient(double n, double grain_diameter, double viscosity, doubl
          1.75 * n * std::sqrt(n) * liquid_density * relative_speed / std::sqrt(150.0 * kappa);
 }
 
+// The interior of a set of cells, as the cell-volume weights below need it (a cell whose points
+// fill it, not one at the set's edge): marks in `edge` the nodes of every cell outside the set;
+// a cell of the set is interior when none of its nodes is marked (interior_cell).
+template <class CellNodes, class InSet>
+void mark_edge_nodes(const CellNodes& cell_nodes, std::size_t n_nodes, InSet in_set,
+                     std::vector<char>& edge) {
+  edge.assign(n_nodes, 0);
+  for (std::size_t c = 0; c < cell_nodes.size(); ++c)
+    if (!in_set(c))
+      for (int node : cell_nodes[c]) edge[static_cast<std::size_t>(node)] = 1;
+}
+
+template <class Nodes>
+bool interior_cell(const Nodes& nodes, const std::vector<char>& edge) {
+  for (int node : nodes)
+    if (edge[static_cast<std::size_t>(node)]) return false;
+  return true;
+}
+
 // The first row (alpha, beta) of the inverse of the moment matrix [[m0, m1^T], [m1, m2]] of
 // the water volume about a node (weights N_i V, offsets d = x - x_i): the node's value of the
 // volume-weighted linear least-squares fit of point values f is alpha sum N V f + beta . sum N
@@ -406,14 +425,12 @@ void Simulation<dim>::update_pore_pressure_cell_scale() {
     for (std::size_t q = 0; q < liquid.size(); ++q) water[liquid.cell[q]] += liquid.volume[q];
   }
   std::vector<char>& surface = pore_pressure_surface_node_;
-  surface.assign(mesh_.node_count(), 0);
-  for (std::size_t c = 0; c < n_cells; ++c)
-    if (!cell_has_soil_[c])
-      for (int node : mesh_.cell_nodes[c]) surface[static_cast<std::size_t>(node)] = 1;
+  mark_edge_nodes(
+      mesh_.cell_nodes, mesh_.node_count(), [&](std::size_t c) { return cell_has_soil_[c] != 0; },
+      surface);
   for (std::size_t c = 0; c < n_cells; ++c) {
-    bool inside = scale[c] > 0;  // the cell holds soil points (cell_has_soil_)
-    for (int node : mesh_.cell_nodes[c])
-      inside = inside && !surface[static_cast<std::size_t>(node)];
+    // The cell holds soil points (scale[c] > 0, cell_has_soil_) and touches no cell without.
+    const bool inside = scale[c] > 0 && interior_cell(mesh_.cell_nodes[c], surface);
     // The water's own measure (PorePressureMeasure::kWater): the cell's pores, |c| times the
     // soil points' porosity there, over the water points' volume sum, in the same cells.
     if (water_measure)
@@ -439,19 +456,16 @@ void Simulation<dim>::update_pore_pressure_cell_scale() {
   // water cells that touch a soil cell keep 1 too: a pond's points crowd at a sand's surface,
   // and that crowding is what pushes the water on into the sand (stop 32); scaled, the quick
   // seepage column drained at 0.76 of Ergun's flux (0.92 unscaled).
-  std::vector<char>& dry = water_surface_node_;
-  dry.assign(mesh_.node_count(), 0);
-  for (std::size_t c = 0; c < n_cells; ++c)
-    if (!(water[c] > 0) || cell_has_soil_[c])
-      for (int node : mesh_.cell_nodes[c]) dry[static_cast<std::size_t>(node)] = 1;
-  pore_water_cell_scale_.resize(n_cells);
+  std::vector<char>& edge = water_surface_node_;
+  mark_edge_nodes(
+      mesh_.cell_nodes, mesh_.node_count(),
+      [&](std::size_t c) { return water[c] > 0 && !cell_has_soil_[c]; }, edge);
   for (std::size_t c = 0; c < n_cells; ++c) {
     if (cell_has_soil_[c]) {
       if (!water_measure) pore_water_cell_scale_[c] = scale[c];
       continue;
     }
-    bool inside = water[c] > 0;
-    for (int node : mesh_.cell_nodes[c]) inside = inside && !dry[static_cast<std::size_t>(node)];
+    const bool inside = water[c] > 0 && interior_cell(mesh_.cell_nodes[c], edge);
     pore_water_cell_scale_[c] = inside ? mesh_.cell_volume[c] / water[c] : 1.0;
   }
 }

@@ -325,7 +325,7 @@ class Simulation {
                : pore_pressure_cell_scale_;
   }
   std::vector<char> pore_pressure_surface_node_;  // scratch: nodes of cells without soil
-  std::vector<char> water_surface_node_;          // scratch: nodes of cells without water
+  std::vector<char> water_surface_node_;          // scratch: nodes of cells without free water
   std::vector<char> liquid_in_soil_;              // per liquid point: it is pore water
   std::vector<Vec> pore_water_velocity_, pore_water_acceleration_;
   std::vector<Vec> mean_water_velocity_;  // mass-weighted mean of the two (eq. 8's flux)
