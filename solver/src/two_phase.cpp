@@ -440,8 +440,9 @@ void Simulation<dim>::update_pore_pressure_cell_scale() {
   }
   if (!free_water) return;
   // Free water (free_water_cell_volume): its interior cells weigh their points' pressure by
-  // |c| / (sum of the cell's water points' volumes), as the soil's cells do above, so that the
-  // nodal force of a pressure field is the weak form's over the cell, whatever the points'
+  // |c| / (sum of the cell's water points' volumes), as the soil's cells do above, in the
+  // pressure force of eqs. (15), (16) and, as its adjoint, in the divergence of eq. (8), so that
+  // the nodal force of a pressure field is the weak form's over the cell, whatever the points'
   // spread. Why: the force of the points' pressures, sum_q V_q p_q grad N_i, sees each cell's
   // pressure only through its sum over the points, sum_q V_q p_q; where the points' volumes
   // over- or under-fill a cell (their quadrature scatters by 20-35 % once a lattice has moved
