@@ -126,9 +126,9 @@ void Simulation<dim>::resolve_pressure_projection() {
   if (settings.pore_pressure_cell_measure == PorePressureMeasure::kWater)
     line << "; pore_pressure_cell_measure = \"water\": inside a soil the water points weigh "
             "their pressure by the cell's pores over their own volume";
-  if (settings.free_water_cell_volume)
-    line << "; free_water_cell_volume: free water's interior cells weigh their points' pressure "
-            "by the cell's volume over the points' volumes";
+  if (!settings.free_water_cell_volume)
+    line << "; free_water_cell_volume = false: free water's interior cells weigh their points' "
+            "pressure by the points' own volumes (water in motion settles)";
   if (settings.liquid_advection == LiquidAdvection::kFlux)
     line << "; liquid_advection = \"flux\": the liquid points move with the grains plus the "
             "water's relative volume flux over their cell's pores";

@@ -335,16 +335,16 @@ TEST(CaseDescription, PorePressureCellMeasureIsSoilOrWater) {
       PorePressureMeasure::kWater);
 }
 
-TEST(CaseDescription, FreeWaterCellVolumeIsOffUnlessSetAndSurvivesTheWrittenCase) {
-  EXPECT_FALSE(SolverSettings{}.free_water_cell_volume);
+TEST(CaseDescription, FreeWaterCellVolumeIsOnUnlessSetAndSurvivesTheWrittenCase) {
+  EXPECT_TRUE(SolverSettings{}.free_water_cell_volume);
   SolverSettings s;
-  s.free_water_cell_volume = true;
+  s.free_water_cell_volume = false;
   toml::table root;
   root.insert("solver", to_toml(s));
-  EXPECT_TRUE(read_solver_settings(*written_and_read(root, "lituya_free_water_cell_volume.toml")
-                                        .root()
-                                        .optional_table("solver"))
-                  .free_water_cell_volume);
+  EXPECT_FALSE(read_solver_settings(*written_and_read(root, "lituya_free_water_cell_volume.toml")
+                                         .root()
+                                         .optional_table("solver"))
+                   .free_water_cell_volume);
   const std::string msg =
       error_reading_solver_settings("[solver]\nfree_water_cell_volume = \"yes\"\n");
   EXPECT_NE(msg.find(":2"), std::string::npos) << msg;

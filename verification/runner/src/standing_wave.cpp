@@ -55,28 +55,20 @@ StandingWaveFit check_tank(CaseResult& result, const Record& r, double linear_pe
 void run_standing_wave(const CaseContext& context, CaseResult& result) {
   const std::string variant = context.full ? "full" : "quick";
   const Record base = run_tank(context, "scene_" + variant + ".toml", "case");
-  const Record cell_volume =
-      run_tank(context, "scene_" + variant + "_cell_volume.toml", "case_cell_volume");
 
   // Linear theory (Lamb 1932, art. 257): omega^2 = g k tanh(k h), k = pi / L.
   const double k = std::numbers::pi / kLength;
   const double omega = std::sqrt(kGravity * k * std::tanh(k * kDepth));
   const double linear_period = 2 * std::numbers::pi / omega;
   const StandingWaveFit fit = check_tank(result, base, linear_period, "");
-  check_tank(result, cell_volume, linear_period, "free_water_cell_volume: ");
 
   std::vector<std::vector<double>> rows;
-  const std::size_t n = std::min(base.time.size(), cell_volume.time.size());
-  for (std::size_t f = 0; f < n; ++f)
+  for (std::size_t f = 0; f < base.time.size(); ++f)
     rows.push_back({base.time[f], base.amplitude[f],
                     base.amplitude[0] * std::cos(omega * base.time[f]),
-                    base.centroid[f] - base.centroid[0], cell_volume.amplitude[f],
-                    cell_volume.centroid[f] - cell_volume.centroid[0]});
+                    base.centroid[f] - base.centroid[0]});
   const auto csv = context.work / "modal_amplitude.csv";
-  write_csv(csv,
-            "time,modal_amplitude,linear_theory,centroid_change,modal_amplitude_cell_volume,"
-            "centroid_change_cell_volume",
-            rows);
+  write_csv(csv, "time,modal_amplitude,linear_theory,centroid_change", rows);
   std::vector<std::vector<double>> extremes;
   for (std::size_t e = 0; e < fit.extreme_time.size(); ++e)
     extremes.push_back({fit.extreme_time[e], fit.extreme_amplitude[e]});
@@ -85,13 +77,11 @@ void run_standing_wave(const CaseContext& context, CaseResult& result) {
   post::plot_xy(png, "Standing wave: amplitude of the surface mode cos(pi x / L)", "time (s)",
                 "amplitude (m)",
                 {{csv, 1, 2, "Lituya (cosine moment of the water's volume)"},
-                 {csv, 1, 5, "Lituya, free_water_cell_volume = true"},
                  {csv, 1, 3, "linear theory, undamped"}});
   result.plots.push_back(std::filesystem::relative(png, context.report));
   const auto centroid_png = context.work / "centroid.png";
   post::plot_xy(centroid_png, "Standing wave: fall of the water's volume centroid", "time (s)",
-                "centroid height - its height at the release (m)",
-                {{csv, 1, 4, "defaults"}, {csv, 1, 6, "free_water_cell_volume = true"}});
+                "centroid height - its height at the release (m)", {{csv, 1, 4, "Lituya"}});
   result.plots.push_back(std::filesystem::relative(centroid_png, context.report));
 }
 

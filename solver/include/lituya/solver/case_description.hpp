@@ -151,8 +151,9 @@ struct SolverSettings {
   // In free water too, each interior cell's pressure acts over the cell's own volume, not over
   // its points' volume sum (two_phase.cpp, update_pore_pressure_cell_scale; scientific manual
   // 10.4): the periodic pressure projection then no longer lets the water's points settle
-  // (verification/standing_wave). Off by default until its full verification is done.
-  bool free_water_cell_volume = false;
+  // (verification/standing_wave). On by default since December 2026 (stop 35); false gives
+  // back the points' own volumes, under which water in motion settles.
+  bool free_water_cell_volume = true;
   LiquidAdvection liquid_advection = LiquidAdvection::kVelocity;
   // Artificial bulk viscosity of the water (scientific manual 10.5; not in the paper): a
   // viscous pressure -zeta div(v) with zeta = liquid_bulk_viscosity * rho_w c_w h. It acts only
