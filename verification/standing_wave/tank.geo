@@ -16,7 +16,7 @@ h = 0.15;    // still water depth (Case B's)
 a = 0.01;    // amplitude of the mode at the walls
 L = 0.5;     // tank length: the mode's wavelength is 2 L
 top = 0.25;  // top of the mesh
-n = 50;      // straight pieces along the cosine (a chord misses it by a (pi / n)^2 / 8 < 0.02 mm)
+n = 50;      // points of the spline along the cosine (a chord between two would miss it by a (pi / n)^2 / 8 < 0.02 mm)
 
 Point(1) = {0, 0, 0};
 Point(2) = {L, 0, 0};
@@ -33,17 +33,14 @@ Line(4) = {10 + n, 1};   // wall x = 0 beside the water
 Line(5) = {10, 4};       // end wall above the water
 Line(6) = {4, 5};        // top
 Line(7) = {5, 10 + n};   // wall x = 0 above the water
-surface[] = {};
-back[] = {};
-For i In {0:n - 1}
-  Line(100 + i) = {10 + i, 11 + i};
-  surface[] += {100 + i};
-  back[] += {-(100 + n - 1 - i)};
-EndFor
+// The surface is one spline through the points, so the mesher places its nodes at the
+// scene's cell size (50 straight lines would each be a mesh edge, cells of L / 50 along the
+// surface whatever cell_size says).
+Spline(100) = {10 : 10 + n};
 
-Curve Loop(1) = {1, 2, surface[], 4};
+Curve Loop(1) = {1, 2, 100, 4};
 Plane Surface(1) = {1};
-Curve Loop(2) = {5, 6, 7, back[]};
+Curve Loop(2) = {5, 6, 7, -100};
 Plane Surface(2) = {2};
 
 Physical Surface("water") = {1};
