@@ -46,10 +46,11 @@ double SeepageColumn::steady_flux(double depth) const {
 }
 
 double SeepageColumn::steady_depth(double d0, double t) const {
-  const double h = 1e-4;
+  // RK4 in equal steps of at most 1e-4 s.
+  const int steps = std::max(1, static_cast<int>(std::ceil(t / 1e-4 - 1e-9)));
+  const double step = t / steps;
   double d = d0;
-  for (double s = 0; s < t - 1e-12; s += h) {
-    const double step = std::min(h, t - s);
+  for (int k = 0; k < steps; ++k) {
     const double k1 = -steady_flux(d), k2 = -steady_flux(d + 0.5 * step * k1);
     const double k3 = -steady_flux(d + 0.5 * step * k2), k4 = -steady_flux(d + step * k3);
     d = std::max(0.0, d + step * (k1 + 2 * k2 + 2 * k3 + k4) / 6);

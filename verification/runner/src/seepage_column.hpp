@@ -34,7 +34,8 @@ struct SeepageColumn {
   double forchheimer_coefficient() const;  // b, kg/m4 (0 without Forchheimer's term)
   // The steady flux under a pond of depth d: G = rho_w g (L + d) / L.
   double steady_flux(double depth) const;
-  // The pond's depth after time t from d0 with the steady flux (RK4, 1e-4 s steps).
+  // The pond's depth after time t from d0 with the steady flux (RK4, equal steps of at most
+  // 1e-4 s).
   double steady_depth(double d0, double t) const;
 
   // Water stored per unit volume of the column and per pascal of pore pressure,
