@@ -21,14 +21,14 @@ struct SeepageColumn {
   double density = 1000;         // kg/m3, rho_w
   double gravity = 9.81;         // m/s2
   double bulk_modulus = 2.15e5;  // Pa, the water's K_w
-  double constrained_modulus =
-      0;                    // Pa, the skeleton's M = E (1 - nu) / ((1 + nu)(1 - 2 nu)); 0 = rigid
+  // Pa, the skeleton's constrained modulus M = E (1 - nu) / ((1 + nu)(1 - 2 nu)); 0: rigid.
+  double constrained_modulus = 0;
   bool forchheimer = true;  // false: Darcy's term of eq. (23) alone
 
   // Darcy flux q = n v (m/s, positive downwards) for a driving gradient G = dp/dz + rho_w g
   // (Pa/m, z upwards; zero in hydrostatic water): n G = a v + b v |v|, with eq. (24)'s
-  // kappa = n^3 D_p^2 / (150 (1 - n)^2), a = n^2 mu / kappa, b = 1.75 n^1.5 rho_w / sqrt(150
-  // kappa).
+  // kappa = n^3 D_p^2 / (150 (1 - n)^2), a = n^2 mu / kappa and
+  // b = 1.75 n^1.5 rho_w / sqrt(150 kappa).
   double flux(double drive) const;
   double darcy_coefficient() const;        // a, Pa s/m2
   double forchheimer_coefficient() const;  // b, kg/m4 (0 without Forchheimer's term)
