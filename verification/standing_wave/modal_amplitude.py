@@ -26,21 +26,26 @@ import vtk
 L, H, G = 0.5, 0.15, 9.81
 
 
-def record(case):
+def liquid_frames(case):
+    """(time, file) of each liquid output of the release stage."""
     pvd = os.path.join(case, "output", "release_liquid.pvd")
-    times, files = [], []
     for m in re.finditer(r'timestep="([^"]+)"[^>]*file="([^"]+)"', open(pvd).read()):
-        times.append(float(m.group(1)))
-        files.append(os.path.join(case, "output", m.group(2)))
+        yield float(m.group(1)), os.path.join(case, "output", m.group(2))
+
+
+def record(case, length=None):
+    """Times, modal amplitudes and volume-centroid heights of a case's liquid outputs."""
+    length = L if length is None else length
     reader = vtk.vtkXMLUnstructuredGridReader()
-    amplitude, centroid = [], []
-    for f in files:
+    times, amplitude, centroid = [], [], []
+    for t, f in liquid_frames(case):
         reader.SetFileName(f)
         reader.Update()
         grid = reader.GetOutput()
         x = vtk_to_numpy(grid.GetPoints().GetData())[:, 0]
         v = vtk_to_numpy(grid.GetPointData().GetArray("volume"))
-        amplitude.append(2 / L * np.sum(v * np.cos(math.pi / L * x)))
+        times.append(t)
+        amplitude.append(2 / length * np.sum(v * np.cos(math.pi / length * x)))
         y = vtk_to_numpy(grid.GetPoints().GetData())[:, 1]
         centroid.append(np.sum(v * y) / np.sum(v))
     return np.array(times), np.array(amplitude), np.array(centroid)

@@ -17,22 +17,16 @@ p / K_w ~ 1e-4):
 usage: wave_energy.py [--length L] CASE_FOLDER [CASE_FOLDER ...]
   --length: the tank's length (0.5 m unless given).
 """
-import math
 import os
-import re
 import sys
 
 import numpy as np
 from vtk.util.numpy_support import vtk_to_numpy
 import vtk
 
+from modal_amplitude import liquid_frames, record
+
 RHO, G = 1000.0, 9.81
-
-
-def frames(case):
-    pvd = os.path.join(case, "output", "release_liquid.pvd")
-    for m in re.finditer(r'timestep="([^"]+)"[^>]*file="([^"]+)"', open(pvd).read()):
-        yield float(m.group(1)), os.path.join(case, "output", m.group(2))
 
 
 def read(path):
@@ -70,11 +64,10 @@ def shape_values(mesh, locator, x):
     return ids, values
 
 
-def energies(x, v, volume, length, mesh, locator):
+def energies(x, v, volume, mesh, locator):
     m = RHO * volume
     kinetic = 0.5 * np.sum(m * np.sum(v * v, axis=1))
     potential = np.sum(m * G * x[:, 1])
-    amplitude = 2 / length * np.sum(volume * np.cos(math.pi / length * x[:, 0]))
     ids, values = shape_values(mesh, locator, x)
     nodes = mesh.GetNumberOfPoints()
     mass, momentum = np.zeros(nodes), np.zeros((nodes, 2))
@@ -85,7 +78,7 @@ def energies(x, v, volume, length, mesh, locator):
     seen = sum(values[:, k][:, None] * nodal[ids[:, k]] for k in range(3))
     unseen = v - seen
     grid = 0.5 * np.sum(m * np.sum(seen * seen, axis=1))
-    return kinetic, potential, amplitude, grid, 0.5 * np.sum(m * np.sum(unseen * unseen, axis=1))
+    return kinetic, potential, grid, 0.5 * np.sum(m * np.sum(unseen * unseen, axis=1))
 
 
 def main():
@@ -98,23 +91,20 @@ def main():
         sys.exit(__doc__)
     for case in args:
         mesh, locator = mesh_of(case)
-        # The mode's amplitude of every output first; the energies only at its extremes.
-        series = list(frames(case))
-        amplitude = []
-        for _, f in series:
-            x, _, volume = read(f)
-            amplitude.append(2 / length * np.sum(volume * np.cos(math.pi / length * x[:, 0])))
-        a = np.abs(np.array(amplitude))
+        # The mode's amplitude of every output first (modal_amplitude.py's record); the
+        # energies only at its extremes.
+        _, amplitude, _ = record(case, length)
+        a = np.abs(amplitude)
         print(f"{case} (J/m)")
         print("  t (s)   E - E0    mode     KE       grid      unseen")
         e0 = None
-        for i, (t, f) in enumerate(series):
+        for i, (t, f) in enumerate(liquid_frames(case)):
             if not (i == 0 or (0 < i < len(a) - 1 and a[i] >= a[i - 1] and a[i] >= a[i + 1])):
                 continue
-            kinetic, potential, amp, grid, unseen = energies(*read(f), length, mesh, locator)
+            kinetic, potential, grid, unseen = energies(*read(f), mesh, locator)
             if e0 is None:
                 e0 = kinetic + potential
-            mode = RHO * G * amp**2 * length / 4
+            mode = RHO * G * amplitude[i]**2 * length / 4
             print(f"  {t:5.2f}  {kinetic + potential - e0:8.5f} {mode:8.5f} {kinetic:8.5f} "
                   f"{grid:8.5f}  {unseen:8.5f}")
 

@@ -10,12 +10,10 @@ namespace lituya::verify {
 
 void run_seepage(const CaseContext& context, CaseResult& result) {
   const double sand_top = 0.5, plate = 0.2, width = 0.1, t1 = 0.3;  // seepage.geo
-  // The scene's column: sand E = 10 MPa, nu = 0.3 (its skeleton's constrained modulus), the
-  // water's reduced K_w = 2.15e5 Pa (scene_*.toml).
+  // The scene's column (scene_*.toml): the water's reduced K_w, the sand's E and nu.
   SeepageColumn column;
-  const double youngs_modulus = 1e7, poisson_ratio = 0.3;
-  column.constrained_modulus =
-      youngs_modulus * (1 - poisson_ratio) / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
+  column.bulk_modulus = 2.15e5;
+  column.constrained_modulus = SeepageColumn::constrained_modulus_of(1e7, 0.3);
   const auto case_folder = run_scene(context);
   const auto frames = read_series(case_folder, "seepage", "liquid");
 
@@ -47,14 +45,14 @@ void run_seepage(const CaseContext& context, CaseResult& result) {
   std::vector<double> times;
   for (const Frame& f : frames) times.push_back(f.time);
   const auto reference = column.transient(d0, times);
+  const std::vector<double> steady = column.steady_depth(d0, times);
   std::vector<std::vector<double>> rows;
   Depths at_t1{NAN, NAN, NAN};
   double reference_t1 = NAN;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const Depths& d = at[k];
-    rows.push_back({frames[k].time, d.pond, reference.pond_depth[k],
-                    column.steady_depth(d0, frames[k].time), d.chamber, reference.outflow[k],
-                    d.sand - first.sand});
+    rows.push_back({frames[k].time, d.pond, reference.pond_depth[k], steady[k], d.chamber,
+                    reference.outflow[k], d.sand - first.sand});
     if (std::abs(frames[k].time - t1) < 1e-6) {
       at_t1 = d;
       reference_t1 = reference.pond_depth[k];

@@ -45,17 +45,25 @@ double SeepageColumn::steady_flux(double depth) const {
   return flux(density * gravity * (length + depth) / length);
 }
 
-double SeepageColumn::steady_depth(double d0, double t) const {
-  // RK4 in equal steps of at most 1e-4 s.
-  const int steps = std::max(1, static_cast<int>(std::ceil(t / 1e-4 - 1e-9)));
-  const double step = t / steps;
-  double d = d0;
-  for (int k = 0; k < steps; ++k) {
-    const double k1 = -steady_flux(d), k2 = -steady_flux(d + 0.5 * step * k1);
-    const double k3 = -steady_flux(d + 0.5 * step * k2), k4 = -steady_flux(d + step * k3);
-    d = std::max(0.0, d + step * (k1 + 2 * k2 + 2 * k3 + k4) / 6);
+std::vector<double> SeepageColumn::steady_depth(double d0, const std::vector<double>& times) const {
+  std::vector<double> depth;
+  double d = d0, t = 0;
+  for (const double until : times) {
+    const int steps = std::max(1, static_cast<int>(std::ceil((until - t) / 1e-4 - 1e-9)));
+    const double step = (until - t) / steps;
+    for (int k = 0; k < steps; ++k) {
+      const double k1 = -steady_flux(d), k2 = -steady_flux(d + 0.5 * step * k1);
+      const double k3 = -steady_flux(d + 0.5 * step * k2), k4 = -steady_flux(d + step * k3);
+      d = std::max(0.0, d + step * (k1 + 2 * k2 + 2 * k3 + k4) / 6);
+    }
+    t = until;
+    depth.push_back(d);
   }
-  return d;
+  return depth;
+}
+
+double SeepageColumn::constrained_modulus_of(double youngs_modulus, double poisson_ratio) {
+  return youngs_modulus * (1 - poisson_ratio) / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
 }
 
 double SeepageColumn::storage() const {

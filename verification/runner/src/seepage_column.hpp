@@ -21,7 +21,7 @@ struct SeepageColumn {
   double density = 1000;         // kg/m3, rho_w
   double gravity = 9.81;         // m/s2
   double bulk_modulus = 2.15e5;  // Pa, the water's K_w
-  // Pa, the skeleton's constrained modulus M = E (1 - nu) / ((1 + nu)(1 - 2 nu)); 0: rigid.
+  // Pa, the skeleton's constrained modulus M (constrained_modulus_of); 0: rigid.
   double constrained_modulus = 0;
   bool forchheimer = true;  // false: Darcy's term of eq. (23) alone
 
@@ -34,9 +34,13 @@ struct SeepageColumn {
   double forchheimer_coefficient() const;  // b, kg/m4 (0 without Forchheimer's term)
   // The steady flux under a pond of depth d: G = rho_w g (L + d) / L.
   double steady_flux(double depth) const;
-  // The pond's depth after time t from d0 with the steady flux (RK4, equal steps of at most
-  // 1e-4 s).
-  double steady_depth(double d0, double t) const;
+  // The pond's depth at each of `times` (ascending, s) from d0 with the steady flux: one RK4
+  // integration, equal steps of at most 1e-4 s between two times.
+  std::vector<double> steady_depth(double d0, const std::vector<double>& times) const;
+
+  // One-dimensional (oedometric) stiffness of a linear-elastic skeleton,
+  // M = E (1 - nu) / ((1 + nu)(1 - 2 nu)).
+  static double constrained_modulus_of(double youngs_modulus, double poisson_ratio);
 
   // Water stored per unit volume of the column and per pascal of pore pressure,
   // n / K_w + 1 / M (0 for a rigid skeleton and incompressible water).

@@ -35,19 +35,17 @@ Record run_tank(const CaseContext& context, const std::string& scene, const std:
   return record;
 }
 
-// The three checks of README.md on one run; `label` names the run in the quantities.
-StandingWaveFit check_tank(CaseResult& result, const Record& r, double linear_period,
-                           const std::string& label) {
+// The three checks of README.md on the run.
+StandingWaveFit check_tank(CaseResult& result, const Record& r, double linear_period) {
   StandingWaveFit fit = fit_standing_wave(r.time, r.amplitude);
   double sinking = 0;  // the largest fall of the centroid below its height at the release
   for (double y : r.centroid) sinking = std::max(sinking, r.centroid.front() - y);
   // Tolerances and why: README.md.
-  add_check(result, label + "period / linear theory's 2 pi / sqrt(g k tanh(k h))", "-",
+  add_check(result, "period / linear theory's 2 pi / sqrt(g k tanh(k h))", "-",
             fit.period / linear_period, 1.0, 0.02);
-  add_check(result, label + "height lost per period (fit to the extremes of the mode)", "-",
+  add_check(result, "height lost per period (fit to the extremes of the mode)", "-",
             fit.decay_per_period, 0.0, 0.05);
-  add_check(result, label + "largest fall of the water's volume centroid", "m", sinking, 0.0,
-            0.001);
+  add_check(result, "largest fall of the water's volume centroid", "m", sinking, 0.0, 0.001);
   return fit;
 }
 }  // namespace
@@ -60,7 +58,7 @@ void run_standing_wave(const CaseContext& context, CaseResult& result) {
   const double k = std::numbers::pi / kLength;
   const double omega = std::sqrt(kGravity * k * std::tanh(k * kDepth));
   const double linear_period = 2 * std::numbers::pi / omega;
-  const StandingWaveFit fit = check_tank(result, base, linear_period, "");
+  const StandingWaveFit fit = check_tank(result, base, linear_period);
 
   std::vector<std::vector<double>> rows;
   for (std::size_t f = 0; f < base.time.size(); ++f)
