@@ -108,6 +108,7 @@ void run_dam_break(const CaseContext& context, CaseResult& result);
 void run_dam_break_late(const CaseContext& context, CaseResult& result);
 void run_terzaghi(const CaseContext& context, CaseResult& result);
 void run_seepage(const CaseContext& context, CaseResult& result);
+void run_infiltration(const CaseContext& context, CaseResult& result);
 void run_sponge(const CaseContext& context, CaseResult& result);
 void run_standing_wave(const CaseContext& context, CaseResult& result);
 

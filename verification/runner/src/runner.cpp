@@ -60,6 +60,8 @@ const std::vector<CaseEntry>& all_cases() {
        run_speed_accuracy_case_b},
       {"terzaghi", "Terzaghi 1D consolidation", run_terzaghi},
       {"seepage", "Seepage through a sand column (Darcy-Forchheimer)", run_seepage},
+      {"infiltration", "Infiltration of a pond into dry sand (Green-Ampt with Ergun drag)",
+       run_infiltration},
       {"sponge", "A long wave leaving a tank through a sponge zone", run_sponge},
       {"standing_wave", "Standing wave in a tank: period and damping of a resolved wave",
        run_standing_wave},

@@ -1,0 +1,31 @@
+// Infiltration column: dry sand [0, 0.1] x [0, 0.3], pond [0.3, 0.4], empty mesh above it
+// [0.4, 0.5]. "floor" is y = 0; "sides" are x = 0 and x = 0.1.
+Point(1) = {0, 0, 0};
+Point(2) = {0.1, 0, 0};
+Point(3) = {0.1, 0.3, 0};
+Point(4) = {0, 0.3, 0};
+Point(5) = {0.1, 0.4, 0};
+Point(6) = {0, 0.4, 0};
+Point(7) = {0.1, 0.5, 0};
+Point(8) = {0, 0.5, 0};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Line(5) = {3, 5};
+Line(6) = {5, 6};
+Line(7) = {6, 4};
+Line(8) = {5, 7};
+Line(9) = {7, 8};
+Line(10) = {8, 6};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Curve Loop(2) = {-3, 5, 6, 7};
+Plane Surface(2) = {2};
+Curve Loop(3) = {-6, 8, 9, 10};
+Plane Surface(3) = {3};
+Physical Surface("sand") = {1};
+Physical Surface("pond") = {2};
+Physical Surface("air") = {3};
+Physical Curve("floor") = {1};
+Physical Curve("sides") = {2, 4, 5, 7, 8, 10};
