@@ -86,8 +86,9 @@ double run_one(const CaseContext& context, const std::string& scene_name, const 
 
   // The water content at the end in bands 1 cm deep, against the sharp front.
   std::vector<std::vector<double>> profile;
-  for (double top = sand_top; top > 1e-9; top -= band) {
-    const double depth = sand_top - top + band / 2;
+  const int bands = static_cast<int>(std::lround(sand_top / band));
+  for (int k = 0; k < bands; ++k) {
+    const double top = sand_top - k * band, depth = (k + 0.5) * band;
     profile.push_back(
         {depth, depth_between(end, top - band, top) / (n * band), depth < wetted ? 1.0 : 0.0});
   }
