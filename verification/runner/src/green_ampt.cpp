@@ -22,13 +22,14 @@ std::vector<double> GreenAmptColumn::front_depth(double d0, const std::vector<do
     const double drive = sand.density * sand.gravity * (pond_depth(d0, front) + front) / front;
     return 2 * s * n / sand.flux(drive);
   };
-  const double s_max = std::sqrt(depth_limit), ds = s_max / intervals;
-  std::vector<double> s_at(intervals + 1), t_at(intervals + 1);
+  // t_at[k]: the time the front takes to depth (k ds)^2.
+  const double ds = std::sqrt(depth_limit) / intervals;
+  std::vector<double> t_at(intervals + 1);
+  double rate0 = time_rate(0.0);
   for (int k = 1; k <= intervals; ++k) {
-    const double s0 = (k - 1) * ds, s1 = k * ds;
-    s_at[k] = s1;
-    t_at[k] =
-        t_at[k - 1] + ds / 6 * (time_rate(s0) + 4 * time_rate(0.5 * (s0 + s1)) + time_rate(s1));
+    const double rate1 = time_rate(k * ds);
+    t_at[k] = t_at[k - 1] + ds / 6 * (rate0 + 4 * time_rate((k - 0.5) * ds) + rate1);
+    rate0 = rate1;
   }
   std::vector<double> front;
   for (const double t : times) {
@@ -40,7 +41,7 @@ std::vector<double> GreenAmptColumn::front_depth(double d0, const std::vector<do
     const auto k = static_cast<std::size_t>(
         std::max<std::ptrdiff_t>(1, std::lower_bound(t_at.begin(), t_at.end(), t) - t_at.begin()));
     const double w = (t - t_at[k - 1]) / (t_at[k] - t_at[k - 1]);
-    const double s = s_at[k - 1] + w * (s_at[k] - s_at[k - 1]);
+    const double s = (static_cast<double>(k) - 1 + w) * ds;
     front.push_back(s * s);
   }
   return front;
