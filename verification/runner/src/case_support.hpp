@@ -109,6 +109,7 @@ void run_dam_break_late(const CaseContext& context, CaseResult& result);
 void run_terzaghi(const CaseContext& context, CaseResult& result);
 void run_seepage(const CaseContext& context, CaseResult& result);
 void run_infiltration(const CaseContext& context, CaseResult& result);
+void run_lock_exchange(const CaseContext& context, CaseResult& result);
 void run_sponge(const CaseContext& context, CaseResult& result);
 void run_standing_wave(const CaseContext& context, CaseResult& result);
 
