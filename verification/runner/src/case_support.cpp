@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 #include "lituya/common/atomic_file.hpp"
@@ -105,6 +106,19 @@ post::WaveCrest complete_first_wave(const std::vector<double>& time,
   post::WaveCrest c = post::first_wave_crest(time, eta, onset);
   if (!c.complete) c.time = c.height = c.area = NAN;
   return c;
+}
+
+void run_at_cell_sizes(const CaseContext& context, CaseResult& result, const CellSizes& h,
+                       const std::string& measure, double tolerance, const SceneRun& run_one) {
+  if (!context.full) {
+    run_one("scene_quick.toml", "quick", h.quick);
+    return;
+  }
+  const double coarse = run_one("scene_full_coarse.toml", "coarse", h.coarse);
+  const double fine = run_one("scene_full_fine.toml", "fine", h.fine);
+  std::ostringstream quantity;
+  quantity << "relative change of " << measure << " from " << h.coarse << " to " << h.fine << " m";
+  add_check(result, quantity.str(), "-", std::abs(fine - coarse) / coarse, 0.0, tolerance);
 }
 
 }  // namespace lituya::verify

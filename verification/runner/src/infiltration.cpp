@@ -105,15 +105,10 @@ double run_one(const CaseContext& context, const std::string& scene_name, const 
 }  // namespace
 
 void run_infiltration(const CaseContext& context, CaseResult& result) {
-  if (!context.full) {
-    run_one(context, "scene_quick.toml", "quick", 0.01, result);
-    return;
-  }
-  const double coarse = run_one(context, "scene_full_coarse.toml", "coarse", 0.005, result);
-  const double fine = run_one(context, "scene_full_fine.toml", "fine", 0.0025, result);
-  // Issue 8: a result that moves with the cell size is not a result.
-  add_check(result, "relative change of the water infiltrated by 1 s from 0.005 to 0.0025 m", "-",
-            std::abs(fine - coarse) / coarse, 0.0, 0.05);
+  run_at_cell_sizes(context, result, {0.01, 0.005, 0.0025}, "the water infiltrated by 1 s", 0.05,
+                    [&](const std::string& scene, const std::string& label, double h) {
+                      return run_one(context, scene, label, h, result);
+                    });
 }
 
 }  // namespace lituya::verify
