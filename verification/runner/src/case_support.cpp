@@ -111,11 +111,11 @@ post::WaveCrest complete_first_wave(const std::vector<double>& time,
 void run_at_cell_sizes(const CaseContext& context, CaseResult& result, const CellSizes& h,
                        const std::string& measure, double tolerance, const SceneRun& run_one) {
   if (!context.full) {
-    run_one("scene_quick.toml", "quick", h.quick);
+    run_one(context, "scene_quick.toml", "quick", h.quick, result);
     return;
   }
-  const double coarse = run_one("scene_full_coarse.toml", "coarse", h.coarse);
-  const double fine = run_one("scene_full_fine.toml", "fine", h.fine);
+  const double coarse = run_one(context, "scene_full_coarse.toml", "coarse", h.coarse, result);
+  const double fine = run_one(context, "scene_full_fine.toml", "fine", h.fine, result);
   std::ostringstream quantity;
   quantity << "relative change of " << measure << " from " << h.coarse << " to " << h.fine << " m";
   add_check(result, quantity.str(), "-", std::abs(fine - coarse) / coarse, 0.0, tolerance);

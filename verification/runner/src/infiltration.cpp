@@ -106,9 +106,7 @@ double run_one(const CaseContext& context, const std::string& scene_name, const 
 
 void run_infiltration(const CaseContext& context, CaseResult& result) {
   run_at_cell_sizes(context, result, {0.01, 0.005, 0.0025}, "the water infiltrated by 1 s", 0.05,
-                    [&](const std::string& scene, const std::string& label, double h) {
-                      return run_one(context, scene, label, h, result);
-                    });
+                    run_one);
 }
 
 }  // namespace lituya::verify

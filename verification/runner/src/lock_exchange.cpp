@@ -82,10 +82,7 @@ double run_one(const CaseContext& context, const std::string& scene_name, const 
 }  // namespace
 
 void run_lock_exchange(const CaseContext& context, CaseResult& result) {
-  run_at_cell_sizes(context, result, {0.02, 0.01, 0.0075}, "the front speed", 0.05,
-                    [&](const std::string& scene, const std::string& label, double h) {
-                      return run_one(context, scene, label, h, result);
-                    });
+  run_at_cell_sizes(context, result, {0.02, 0.01, 0.0075}, "the front speed", 0.05, run_one);
 }
 
 }  // namespace lituya::verify
