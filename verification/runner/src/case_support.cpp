@@ -109,7 +109,7 @@ post::WaveCrest complete_first_wave(const std::vector<double>& time,
 }
 
 void run_at_cell_sizes(const CaseContext& context, CaseResult& result, const CellSizes& h,
-                       const std::string& measure, double tolerance, const SceneRun& run_one) {
+                       const std::string& measure, double tolerance, SceneRun run_one) {
   if (!context.full) {
     run_one(context, "scene_quick.toml", "quick", h.quick, result);
     return;
@@ -119,6 +119,10 @@ void run_at_cell_sizes(const CaseContext& context, CaseResult& result, const Cel
   std::ostringstream quantity;
   quantity << "relative change of " << measure << " from " << h.coarse << " to " << h.fine << " m";
   add_check(result, quantity.str(), "-", std::abs(fine - coarse) / coarse, 0.0, tolerance);
+}
+
+std::string cell_size_tag(double cell_size) {
+  return " (h = " + std::to_string(cell_size).substr(0, 6) + " m)";
 }
 
 }  // namespace lituya::verify

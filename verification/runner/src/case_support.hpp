@@ -95,17 +95,18 @@ void write_csv(const std::filesystem::path& file, const std::string& header,
 // A case measured at one cell size in its quick variant (scene_quick.toml) and at two in its
 // full variant (scene_full_coarse.toml, scene_full_fine.toml). `run_one(context, scene, label,
 // h, result)` runs one scene into <work>/<label>, adds its own checks and returns the measure
-// whose relative
-// change from the coarser to the finer full mesh the full variant checks against `tolerance`
-// (issue 8: a result that moves with the cell size is not a result). The check reads
-// "relative change of <measure> from <coarse> to <fine> m".
+// whose relative change from the coarser to the finer full mesh the full variant checks
+// against `tolerance` (issue 8: a result that moves with the cell size is not a result). The
+// check reads "relative change of <measure> from <coarse> to <fine> m".
 struct CellSizes {
   double quick = 0, coarse = 0, fine = 0;  // m
 };
 using SceneRun = double (*)(const CaseContext& context, const std::string& scene,
                             const std::string& label, double cell_size, CaseResult& result);
 void run_at_cell_sizes(const CaseContext& context, CaseResult& result, const CellSizes& h,
-                       const std::string& measure, double tolerance, const SceneRun& run_one);
+                       const std::string& measure, double tolerance, SceneRun run_one);
+// " (h = 0.0100 m)": the cell size that labels a check of such a case.
+std::string cell_size_tag(double cell_size);
 
 using CaseFunction = std::function<void(const CaseContext&, CaseResult&)>;
 

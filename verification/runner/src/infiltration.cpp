@@ -61,7 +61,7 @@ double run_one(const CaseContext& context, const std::string& scene_name, const 
     if (std::abs(times[k] - t_rate) < 1e-6) k_rate = k;
   }
   const std::size_t last = times.size() - 1;
-  const std::string at = " (h = " + std::to_string(cell_size).substr(0, 6) + " m)";
+  const std::string at = cell_size_tag(cell_size);
   const double infiltrated_ratio = infiltrated[last] / (n * front[last]);
   add_check(result, "water infiltrated by the end / Green-Ampt with Ergun's drag" + at, "-",
             infiltrated_ratio, 1.0, 0.05);

@@ -1,7 +1,5 @@
 // Lock exchange: a saturated, strengthless fine soil released into water runs along the bed as
 // a heavy fluid, against the energy-conserving front speed (verification/lock_exchange/README.md).
-#include <cmath>
-
 #include "case_support.hpp"
 #include "lituya/post/plot.hpp"
 #include "lock_exchange_measure.hpp"
@@ -60,7 +58,7 @@ double run_one(const CaseContext& context, const std::string& scene_name, const 
     fronts.push_back(current_front(read_positions(f.file), kFrontBelow, 2));
     rows.push_back({f.time, fronts.back(), kGate + reference * f.time});
   }
-  const std::string at = " (h = " + std::to_string(cell_size).substr(0, 6) + " m)";
+  const std::string at = cell_size_tag(cell_size);
   const double ratio = front_speed(times, fronts, kWindowLow, kWindowHigh) / reference;
   add_check(result, "front speed over x = 0.3-0.7 m / energy-conserving lock exchange" + at, "-",
             ratio, 1.0, 0.10);

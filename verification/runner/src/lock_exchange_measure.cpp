@@ -5,6 +5,8 @@
 #include <functional>
 #include <limits>
 
+#include "lituya/verify/speed_accuracy.hpp"
+
 namespace lituya::verify {
 
 double current_front(const std::vector<double>& positions, double below, int strays) {
@@ -18,18 +20,13 @@ double current_front(const std::vector<double>& positions, double below, int str
 
 double front_speed(const std::vector<double>& time, const std::vector<double>& front, double low,
                    double high) {
-  double n = 0, st = 0, sx = 0, stt = 0, stx = 0;
-  for (std::size_t k = 0; k < time.size() && k < front.size(); ++k) {
-    if (!(front[k] >= low && front[k] <= high)) continue;
-    n += 1;
-    st += time[k];
-    sx += front[k];
-    stt += time[k] * time[k];
-    stx += time[k] * front[k];
-  }
-  const double spread = n * stt - st * st;
-  if (n < 3 || !(spread > 0)) return std::numeric_limits<double>::quiet_NaN();
-  return (n * stx - st * sx) / spread;
+  std::vector<double> t, x;
+  for (std::size_t k = 0; k < time.size() && k < front.size(); ++k)
+    if (front[k] >= low && front[k] <= high) {
+      t.push_back(time[k]);
+      x.push_back(front[k]);
+    }
+  return t.size() < 3 ? std::numeric_limits<double>::quiet_NaN() : least_squares_slope(t, x);
 }
 
 double lock_exchange_speed(double gravity, double depth, double heavy, double light) {

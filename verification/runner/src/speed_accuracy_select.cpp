@@ -27,6 +27,23 @@ double median(std::vector<double> values) {
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
+double least_squares_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t count = std::min(x.size(), y.size());
+  const double n = static_cast<double>(count);
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    mx += x[i] / n;
+    my += y[i] / n;
+  }
+  double sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    sxx += (x[i] - mx) * (x[i] - mx);
+    sxy += (x[i] - mx) * (y[i] - my);
+  }
+  if (count < 2 || !(sxx > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return sxy / sxx;
+}
+
 double log_log_slope(const std::vector<double>& x, const std::vector<double>& y) {
   std::vector<double> lx, ly;
   for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i)
@@ -34,19 +51,7 @@ double log_log_slope(const std::vector<double>& x, const std::vector<double>& y)
       lx.push_back(std::log(x[i]));
       ly.push_back(std::log(y[i]));
     }
-  const double n = static_cast<double>(lx.size());
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < lx.size(); ++i) {
-    mx += lx[i] / n;
-    my += ly[i] / n;
-  }
-  double sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < lx.size(); ++i) {
-    sxx += (lx[i] - mx) * (lx[i] - mx);
-    sxy += (lx[i] - mx) * (ly[i] - my);
-  }
-  if (lx.size() < 2 || !(sxx > 0)) return std::numeric_limits<double>::quiet_NaN();
-  return sxy / sxx;
+  return least_squares_slope(lx, ly);
 }
 
 RichardsonEstimate richardson(double f1, double f2, double f3, double r) {

@@ -29,6 +29,10 @@ std::optional<std::size_t> cheapest_within(const std::vector<TradeRun>& runs, do
 // The median of `values` (the mean of the two middle ones for an even count); NaN when empty.
 double median(std::vector<double> values);
 
+// The least-squares slope of y against x (about the means); NaN with fewer than two pairs or
+// no spread in x. The pairs are taken as given (no filtering).
+double least_squares_slope(const std::vector<double>& x, const std::vector<double>& y);
+
 // The least-squares slope of log(y) against log(x): the exponent p of y ~ x^p. Pairs with a
 // non-positive or non-finite x or y are left out; NaN when fewer than two distinct x remain.
 double log_log_slope(const std::vector<double>& x, const std::vector<double>& y);
