@@ -3,6 +3,7 @@
 #include "case_support.hpp"
 #include "lituya/post/plot.hpp"
 #include "lock_exchange_measure.hpp"
+#include "standing_wave_measure.hpp"
 
 namespace lituya::verify {
 
@@ -23,21 +24,14 @@ constexpr double kFrontBelow = kDepth / 4, kWindowLow = 0.3, kWindowHigh = 0.7;
 // or leave gaps.
 double volume_centroid(const Frame& solid, const Frame& liquid) {
   int c = 0;
-  const std::vector<double> xs = read_positions(solid.file),
-                            ms = read_point_array(solid.file, "mass", c);
+  std::vector<double> positions = read_positions(solid.file);
+  std::vector<double> volumes = read_point_array(solid.file, "mass", c);
+  for (double& v : volumes) v /= kGrainDensity;
   const std::vector<double> xl = read_positions(liquid.file),
                             vl = read_point_array(liquid.file, "volume", c);
-  double moment = 0, volume = 0;
-  for (std::size_t p = 0; p < ms.size(); ++p) {
-    const double v = ms[p] / kGrainDensity;
-    moment += v * xs[3 * p + 1];
-    volume += v;
-  }
-  for (std::size_t q = 0; q < vl.size(); ++q) {
-    moment += vl[q] * xl[3 * q + 1];
-    volume += vl[q];
-  }
-  return moment / volume;
+  positions.insert(positions.end(), xl.begin(), xl.end());
+  volumes.insert(volumes.end(), vl.begin(), vl.end());
+  return volume_centroid_height(positions, volumes);
 }
 
 // Runs one scene into <work>/<label>, adds its two checks (labelled with the cell size), writes
