@@ -268,36 +268,30 @@ void Simulation<dim>::remap_momentum() {
 }
 
 template <int dim>
+double Simulation<dim>::reference_volume(std::size_t p) const {
+  return solid_.points.mass[p] / materials_[solid_.points.material[p]].dry_density;
+}
+
+template <int dim>
 void Simulation<dim>::smooth_volumetric_strain(double dt) {
   // The volumetric strain increment of a linear simplex is constant over the cell; with
   // more cells than nodes, isochoric flow over-constrains the mesh (locking). Averaging it
-  // at the nodes over the surrounding material (weighted by point volume) and interpolating
-  // back leaves one volumetric constraint per node instead of per cell.
+  // at the nodes and interpolating back (nodal_average.hpp) leaves one volumetric constraint
+  // per node instead of per cell. The weights are the points' volumes at the dry density,
+  // V_0 = m / rho_d, the measure of the Kirchhoff stress (4.6): a point dilated at a thin
+  // front weighs what its grains weigh, not its inflated volume.
   const MaterialPoints<dim>& points = solid_.points;
-  const std::size_t n_points = points.size();
-  smoothing_.run(
-      n_points, [](SmoothingSums& sums) { return std::tie(sums.volumetric_strain, sums.volume); },
-      [&](SmoothingSums& sums, std::size_t p) {
-        const int cell = points.cell[p];
-        const auto& nodes = mesh_.cell_nodes[cell];
-        const auto& grad = mesh_.cell_shape_gradient[cell];
+  detail::nodal_average<dim>(
+      smoothing_, mesh_, points.cell, solid_.shape, threads_,
+      [&](std::size_t p) { return reference_volume(p); },
+      [&](std::size_t p) {
+        const auto& nodes = mesh_.cell_nodes[points.cell[p]];
+        const auto& grad = mesh_.cell_shape_gradient[points.cell[p]];
         double divergence = 0;
         for (int i = 0; i <= dim; ++i) divergence += solid_.node_velocity[nodes[i]].dot(grad[i]);
-        const double weighted = points.volume[p] * divergence * dt;
-        for (int node : nodes) {
-          sums.volumetric_strain[node] += weighted;
-          sums.volume[node] += points.volume[p];
-        }
-      });
-  const SmoothingSums& sums = smoothing_.sums();
-#pragma omp parallel for num_threads(threads_) schedule(static)
-  for (std::size_t p = 0; p < n_points; ++p) {
-    const auto& nodes = mesh_.cell_nodes[points.cell[p]];
-    double smoothed = 0;
-    for (int i = 0; i <= dim; ++i)
-      smoothed += solid_.shape[p](i) * sums.volumetric_strain[nodes[i]] / sums.volume[nodes[i]];
-    point_volumetric_strain_[p] = smoothed;
-  }
+        return divergence * dt;
+      },
+      [&](std::size_t p, double smoothed) { point_volumetric_strain_[p] = smoothed; });
 }
 
 template <int dim>

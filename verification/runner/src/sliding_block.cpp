@@ -18,6 +18,12 @@ void run_sliding_block(const CaseContext& context, CaseResult& result) {
   const double measured = fitted_acceleration(block);
   add_check(result, "acceleration along the incline", "m/s2", measured, acceleration,
             0.02 * acceleration);
+  // The quick scene with the volumetric smoothing on (README.md), in both variants.
+  const InclineTravel smoothed = along_slope_travel(
+      run_scene(context, context.source / "scene_smoothing.toml", context.work / "smoothing"),
+      "slide", dx, dy);
+  add_check(result, "acceleration along the incline, volumetric_smoothing = true", "m/s2",
+            fitted_acceleration(smoothed), acceleration, 0.02 * acceleration);
 
   std::vector<std::vector<double>> rows;
   for (std::size_t i = 0; i < block.time.size(); ++i)

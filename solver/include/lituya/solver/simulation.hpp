@@ -32,6 +32,7 @@
 #include "lituya/solver/material_points.hpp"
 #include "lituya/solver/mesh.hpp"
 #include "lituya/solver/mohr_coulomb.hpp"
+#include "lituya/solver/nodal_average.hpp"
 #include "lituya/solver/nodal_scatter.hpp"
 #include "lituya/solver/phase.hpp"
 #include "lituya/solver/transfer_damping.hpp"
@@ -197,14 +198,6 @@ class Simulation {
       solid_mass_gradient.assign(n, Vec::Zero());
     }
   };
-  // Volume-weighted nodal sums of the volumetric strain increment.
-  struct SmoothingSums {
-    std::vector<double> volumetric_strain, volume;
-    void assign(std::size_t n) {
-      volumetric_strain.assign(n, 0.0);
-      volume.assign(n, 0.0);
-    }
-  };
   struct MaterialModelData {
     MaterialModel model;
     ElasticConstants elastic;
@@ -219,6 +212,7 @@ class Simulation {
   void nodal_update(double dt, double damping);
   void remap_momentum();
   void smooth_volumetric_strain(double dt);
+  double reference_volume(std::size_t p) const;  // m / rho_d: the Kirchhoff stress's volume
   void update_stress_and_relocate(double dt);
   // Two-phase parts (two_phase.cpp).
   void setup_liquid();
@@ -274,9 +268,9 @@ class Simulation {
   std::vector<MaterialModelData> materials_;
   Vec gravity_;
   int threads_ = 1;
-  // Volumetric strain smoothing: volume-weighted nodal sums and the smoothed value per point.
+  // Volumetric strain smoothing: the nodal sums and the smoothed value per point.
   bool volumetric_smoothing_;
-  detail::NodalScatter<SmoothingSums> smoothing_;
+  detail::NodalScatter<detail::NodalAverageSums> smoothing_;
   std::vector<double> point_volumetric_strain_;
   TransferDamping damping_;  // the FLIP/PIC blend of each phase (copied into the phases)
   bool musl_;
