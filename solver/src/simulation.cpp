@@ -325,8 +325,8 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
     // rate of the Cauchy stress, a point dilated 40-fold at a thin front (grains parted at
     // the tension apex) was recompressed with the dense soil's stiffness times its inflated
     // volume, and threw the points sharing its nearly empty nodes (issue 8).
-    const double reference_volume = points.mass[p] / material.dry_density;
-    sigma *= points.volume[p] / reference_volume;
+    const double volume_at_dry_density = reference_volume(p);
+    sigma *= points.volume[p] / volume_at_dry_density;
     if (material.max_porosity < 1.0 && porosity(p) >= material.max_porosity)
       sigma.setZero();  // n > n_max: grains separated, no effective stress (section 2.3)
     else if (material.model == MaterialModel::kMohrCoulomb)
@@ -334,7 +334,7 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
     else
       elastic_update(material.elastic, sigma, strain);
     points.volume[p] *= 1.0 + strain(0) + strain(1) + strain(2);
-    sigma *= reference_volume / points.volume[p];
+    sigma *= volume_at_dry_density / points.volume[p];
 
     const double speed = points.velocity[p].norm();
     const PointFault kind = relocate(solid_, mesh_, p, speed, sigma.allFinite(), max_velocity_);

@@ -5,8 +5,8 @@
 // over the nodes i of point p's cell and the points q of the cells around node i. It
 // reproduces a constant field exactly, does not amplify a field (sum w (S f)^2 <= sum w f^2),
 // and is self-adjoint in the points' weighted sum, sum_p w_p a_p (S b)_p = sum_p w_p b_p (S a)_p.
-// The smoothing's first form, a flat sum over a node's points interpolated back with N, is
-// neither; it fed FLIP noise until a point left the mesh (verification/sliding_block), which
+// The smoothing's first form, a flat sum over a node's points interpolated back with N, is not
+// symmetric; it fed FLIP noise until a point left the mesh (verification/sliding_block), which
 // this form does not. Internal to the solver library.
 #include <cstddef>
 #include <tuple>
