@@ -285,8 +285,9 @@ void Simulation<dim>::smooth_volumetric_strain(double dt) {
       smoothing_, mesh_, points.cell, solid_.shape, threads_,
       [&](std::size_t p) { return reference_volume(p); },
       [&](std::size_t p) {
-        const auto& nodes = mesh_.cell_nodes[points.cell[p]];
-        const auto& grad = mesh_.cell_shape_gradient[points.cell[p]];
+        const int cell = points.cell[p];
+        const auto& nodes = mesh_.cell_nodes[cell];
+        const auto& grad = mesh_.cell_shape_gradient[cell];
         double divergence = 0;
         for (int i = 0; i <= dim; ++i) divergence += solid_.node_velocity[nodes[i]].dot(grad[i]);
         return divergence * dt;
