@@ -1,6 +1,7 @@
 #include "lituya/pre/gmsh_mesh.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -243,7 +245,7 @@ double model_measure(int dim) {
 
 MeshSizeEstimate estimate_open_model(const MeshingOptions& options) {
   return estimate_mesh_size(model_measure(options.dimension), options.dimension, options.cell_size,
-                            options.size_check.points_per_cell);
+                            options.size_check.points_per_cell, options.crossed);
 }
 
 // "63208" for a count a reader can take in at a glance, "4.6e+12" beyond.
@@ -378,16 +380,109 @@ void orient_cells(Mesh& mesh, std::size_t begin, std::size_t end, double cell_si
     std::swap(mesh.cell_nodes[cell * corners + 1], mesh.cell_nodes[cell * corners + 2]);
 }
 
+// The nodes of a crossed mesh that gmsh does not know: one at the centre of each quadrangle.
+// They get tags above every gmsh node tag, so that the cells can be assembled with gmsh tags
+// as before and renumbered once.
+struct CentreNodes {
+  std::size_t next_tag = 0;
+  std::unordered_map<std::size_t, std::array<double, 3>> xyz;
+};
+
+// The point where a quadrangle's diagonals cross, or nothing when they do not (a
+// non-convex or degenerate quadrangle). Why there and not at the mean of the corners: the
+// four triangles' volume constraints are dependent only when the edges meeting at the centre
+// lie on two straight lines (the centre is a "singular vertex"); around any other point the
+// four constraints are independent and the mesh locks like any other triangle mesh.
+std::optional<std::array<double, 3>> diagonals_crossing(const std::array<double, 3>& a,
+                                                        const std::array<double, 3>& b,
+                                                        const std::array<double, 3>& c,
+                                                        const std::array<double, 3>& d) {
+  // a + s (c - a) = b + t (d - b), solved by Cramer's rule in the x-y plane.
+  const double ac_x = c[0] - a[0], ac_y = c[1] - a[1];
+  const double bd_x = d[0] - b[0], bd_y = d[1] - b[1];
+  const double ab_x = b[0] - a[0], ab_y = b[1] - a[1];
+  const double det = ac_x * -bd_y - ac_y * -bd_x;
+  if (det == 0) return std::nullopt;
+  const double s = (ab_x * -bd_y - ab_y * -bd_x) / det;
+  const double t = (ac_x * ab_y - ac_y * ab_x) / det;
+  if (!(s > 0 && s < 1 && t > 0 && t < 1)) return std::nullopt;
+  return std::array<double, 3>{a[0] + s * ac_x, a[1] + s * ac_y, a[2] + s * (c[2] - a[2])};
+}
+
+// The cells of one entity of a crossed mesh as linear triangles: gmsh's triangles (blossom
+// recombination may leave a few) as they are, each quadrangle (corners a b c d) as the four
+// triangles (a b o) (b c o) (c d o) (d a o) around the point o where its diagonals cross.
+// The four keep the quadrangle's element tag, so an error about one names what gmsh wrote.
+GmshElements crossed_entity_elements(
+    const std::filesystem::path& geometry, int dim, int entity,
+    const std::unordered_map<std::size_t, std::array<double, 3>>& gmsh_xyz, CentreNodes& centres) {
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, node_tags;
+  gmsh::model::mesh::getElements(types, tags, node_tags, dim, entity);
+  GmshElements out;
+  for (std::size_t t = 0; t < types.size(); ++t) {
+    if (tags[t].empty()) continue;
+    if (types[t] == 2) {  // 3-node triangle
+      out.tags.insert(out.tags.end(), tags[t].begin(), tags[t].end());
+      out.node_tags.insert(out.node_tags.end(), node_tags[t].begin(), node_tags[t].end());
+      continue;
+    }
+    if (types[t] != 3)  // 4-node quadrangle
+      throw InputError(geometry.string(), 0,
+                       entity_words(dim, entity) + " has " + std::to_string(tags[t].size()) +
+                           " elements of type " + element_name(types[t]) +
+                           "; a crossed mesh needs linear quadrangles (gmsh type 3) or "
+                           "triangles (gmsh type 2)");
+    for (std::size_t q = 0; q < tags[t].size(); ++q) {
+      const std::size_t* corner = &node_tags[t][4 * q];
+      std::array<std::array<double, 3>, 4> x;
+      for (int k = 0; k < 4; ++k) {
+        const auto found = gmsh_xyz.find(corner[k]);
+        if (found == gmsh_xyz.end())
+          throw InputError(geometry.string(), 0,
+                           "element " + std::to_string(tags[t][q]) + " uses node " +
+                               std::to_string(corner[k]) + ", which the file does not define");
+        x[k] = found->second;
+      }
+      const auto centre = diagonals_crossing(x[0], x[1], x[2], x[3]);
+      if (!centre)
+        throw InputError(geometry.string(), 0,
+                         "quadrangle " + std::to_string(tags[t][q]) + " (nodes " +
+                             node_list({corner, corner + 4}) + ") in " + entity_words(dim, entity) +
+                             " is not convex: its diagonals do not cross, so it cannot be "
+                             "cut into four triangles");
+      const std::size_t centre_tag = centres.next_tag++;
+      centres.xyz[centre_tag] = *centre;
+      for (int k = 0; k < 4; ++k) {
+        out.tags.push_back(tags[t][q]);
+        out.node_tags.insert(out.node_tags.end(), {corner[k], corner[(k + 1) % 4], centre_tag});
+      }
+    }
+  }
+  return out;
+}
+
 Mesh read_current_model(const std::filesystem::path& geometry, const MeshingOptions& options) {
   const int dim = options.dimension;
   const int cell_type = dim == 2 ? 2 : 4;   // 3-node triangle, 4-node tetrahedron
   const int facet_type = dim == 2 ? 1 : 2;  // 2-node line, 3-node triangle
   const std::string cell_words =
-      dim == 2 ? "linear triangles (gmsh type 2) in 2D" : "linear tetrahedra (gmsh type 4) in 3D";
+      dim == 2 ? "linear triangles (gmsh type 2) in 2D (quadrangles with [mesh] crossed = true)"
+               : "linear tetrahedra (gmsh type 4) in 3D";
   const std::string facet_words = dim == 2 ? "linear lines (gmsh type 1) on 2D boundaries"
                                            : "linear triangles (gmsh type 2) on 3D boundaries";
   Mesh mesh;
   mesh.dimension = dim;
+
+  std::vector<std::size_t> all_tags;
+  std::vector<double> all_xyz, parametric;
+  gmsh::model::mesh::getNodes(all_tags, all_xyz, parametric, -1, -1, false, false);
+  std::unordered_map<std::size_t, std::array<double, 3>> gmsh_xyz;
+  CentreNodes centres;
+  for (std::size_t i = 0; i < all_tags.size(); ++i) {
+    gmsh_xyz[all_tags[i]] = {all_xyz[3 * i], all_xyz[3 * i + 1], all_xyz[3 * i + 2]};
+    centres.next_tag = std::max(centres.next_tag, all_tags[i] + 1);
+  }
 
   // Cells, entity by entity (orientation is a per-entity matter), still with gmsh node tags.
   std::vector<std::pair<int, std::pair<std::size_t, std::size_t>>> entity_cells;
@@ -395,7 +490,9 @@ Mesh read_current_model(const std::filesystem::path& geometry, const MeshingOpti
   gmsh::vectorpair entities;
   gmsh::model::getEntities(entities, dim);
   for (const auto& [entity_dim, entity] : entities) {
-    GmshElements e = entity_elements(geometry, entity_dim, entity, cell_type, cell_words);
+    GmshElements e = options.crossed
+                         ? crossed_entity_elements(geometry, entity_dim, entity, gmsh_xyz, centres)
+                         : entity_elements(geometry, entity_dim, entity, cell_type, cell_words);
     const std::size_t begin = mesh.cell_element_tags.size();
     mesh.cell_element_tags.insert(mesh.cell_element_tags.end(), e.tags.begin(), e.tags.end());
     cell_gmsh_nodes.insert(cell_gmsh_nodes.end(), e.node_tags.begin(), e.node_tags.end());
@@ -417,18 +514,17 @@ Mesh read_current_model(const std::filesystem::path& geometry, const MeshingOpti
   mesh.cell_nodes.reserve(cell_gmsh_nodes.size());
   for (std::size_t tag : cell_gmsh_nodes) mesh.cell_nodes.push_back(node_index.at(tag));
 
-  std::vector<std::size_t> all_tags;
-  std::vector<double> all_xyz, parametric;
-  gmsh::model::mesh::getNodes(all_tags, all_xyz, parametric, -1, -1, false, false);
   mesh.node_xyz.assign(3 * gmsh_node_tag.size(), 0.0);
   std::vector<bool> found(gmsh_node_tag.size(), false);
-  for (std::size_t i = 0; i < all_tags.size(); ++i) {
-    auto it = node_index.find(all_tags[i]);
-    if (it == node_index.end()) continue;
+  auto place = [&](std::size_t tag, const std::array<double, 3>& xyz) {
+    auto it = node_index.find(tag);
+    if (it == node_index.end()) return;
     const auto n = static_cast<std::size_t>(it->second);
-    std::copy_n(&all_xyz[3 * i], 3, &mesh.node_xyz[3 * n]);
+    std::copy_n(xyz.data(), 3, &mesh.node_xyz[3 * n]);
     found[n] = true;
-  }
+  };
+  for (const auto& [tag, xyz] : gmsh_xyz) place(tag, xyz);
+  for (const auto& [tag, xyz] : centres.xyz) place(tag, xyz);
   for (std::size_t n = 0; n < found.size(); ++n)
     if (!found[n])
       throw InputError(geometry.string(), 0,
@@ -699,6 +795,9 @@ Mesh read_gmsh_mesh(const std::filesystem::path& geometry, const MeshingOptions&
       gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
       refuse_crashing_algorithms(geometry, options.dimension);
       refuse_too_large_mesh(geometry, options);
+      // Quadrangles for a crossed mesh: gmsh's default triangulation, then recombined in
+      // pairs (blossom); read_current_model cuts each at its centre.
+      if (options.crossed) gmsh::option::setNumber("Mesh.RecombineAll", 1);
       call_without_throwing(geometry, [&] { gmsh::model::mesh::generate(options.dimension); });
     }
     return read_current_model(geometry, options);

@@ -12,9 +12,10 @@
 namespace lituya::pre {
 
 MeshSizeEstimate estimate_mesh_size(double measure, int dimension, double cell_size,
-                                    int points_per_cell) {
-  const double cell_measure = dimension == 2 ? std::sqrt(3.0) / 4 * cell_size * cell_size
-                                             : cell_size * cell_size * cell_size / 4.7;
+                                    int points_per_cell, bool crossed) {
+  const double triangle = crossed ? 0.25 : std::sqrt(3.0) / 4;
+  const double cell_measure =
+      dimension == 2 ? triangle * cell_size * cell_size : cell_size * cell_size * cell_size / 4.7;
   MeshSizeEstimate e;
   e.cells = measure / cell_measure;
   e.points = e.cells * points_per_cell;

@@ -63,6 +63,12 @@ void read_mesh_table(const TomlTable& root, const fs::path& scene_file, Scene& s
                   "D; allowed values: " + supported_points_per_cell(scene.dimension),
               "points_per_cell");
   scene.points_per_cell = static_cast<int>(points_per_cell);
+  scene.crossed = mesh.boolean_or("crossed", false);
+  if (scene.crossed && scene.dimension != 2)
+    mesh.fail(
+        "'mesh.crossed' = true is available in 2D only (quadrangles cut into four "
+        "triangles); 3D meshes are tetrahedra as gmsh makes them",
+        "crossed");
 
   // `gravity` belongs to the scene root; a line written under [mesh] (as a reader of the
   // format example may do) is accepted too, but not both.

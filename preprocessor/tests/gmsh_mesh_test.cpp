@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "test_support.hpp"
 
@@ -143,7 +145,120 @@ TEST(GmshMesh, QuadrilateralsAreRejected) {
       [] {
         read_gmsh_mesh(test_data("quads.msh"), {2, 0.5, false});
       },
-      "quads.msh", 0, {"gmsh type 3", "linear triangles (gmsh type 2)"});
+      "quads.msh", 0, {"gmsh type 3", "linear triangles (gmsh type 2)", "crossed = true"});
+}
+
+// A crossed mesh: gmsh's quadrangles, each cut into four triangles around the point where its
+// diagonals cross. The cells tile the same surfaces, boundaries are untouched, and each
+// quadrangle's four triangles share one new node that lies on both diagonals.
+TEST(GmshMesh, CrossedMeshCutsQuadranglesAtTheirDiagonals) {
+  const Mesh mesh = read_gmsh_mesh(test_data("two_squares.geo"), {2, 0.25, false, true});
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c) EXPECT_GT(signed_cell_measure(mesh, c), 0);
+  EXPECT_NEAR(total_measure(mesh, all_cells(mesh)), 2.0, 1e-12);
+  const auto soil = mesh.find_group("soil", 2), bottom = mesh.find_group("bottom", 1);
+  ASSERT_TRUE(soil && bottom);
+  EXPECT_NEAR(total_measure(mesh, mesh.group_cells[*soil]), 1.0, 1e-12);
+  // The bottom is still 2 m of facets at y = 0, each an edge of a cell (recombination may
+  // give it more segments than the plain mesh has).
+  const auto& facets = mesh.group_facets[*bottom];
+  double length = 0;
+  for (std::size_t k = 0; k < facets.size(); k += 2) {
+    const double* a = &mesh.node_xyz[3 * facets[k]];
+    const double* b = &mesh.node_xyz[3 * facets[k + 1]];
+    EXPECT_EQ(a[1], 0.0);
+    EXPECT_EQ(b[1], 0.0);
+    length += std::hypot(b[0] - a[0], b[1] - a[1]);
+  }
+  EXPECT_NEAR(length, 2.0, 1e-12);
+
+  // Cells by gmsh element: four per quadrangle (blossom leaves no triangle on these squares).
+  std::map<std::size_t, std::vector<std::size_t>> cells_of_element;
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c)
+    cells_of_element[mesh.cell_element_tags[c]].push_back(c);
+  ASSERT_GT(cells_of_element.size(), 16u);
+  EXPECT_EQ(mesh.cell_count(), 4 * cells_of_element.size());
+  std::size_t non_parallelograms = 0;
+  for (const auto& [element, cells] : cells_of_element) {
+    ASSERT_EQ(cells.size(), 4u);
+    // The centre is the one node all four share; the corners are the others.
+    std::map<std::int64_t, int> uses;
+    for (std::size_t c : cells)
+      for (int k = 0; k < 3; ++k) ++uses[mesh.cell_nodes[3 * c + k]];
+    std::int64_t centre = -1;
+    std::vector<std::int64_t> corners;
+    for (const auto& [node, count] : uses) {
+      if (count == 4) centre = node;
+      if (count == 2) corners.push_back(node);
+    }
+    ASSERT_GE(centre, 0);
+    ASSERT_EQ(corners.size(), 4u);
+    // Order the corners around the centre: opposite corners are the ones that share no cell.
+    auto share_a_cell = [&](std::int64_t a, std::int64_t b) {
+      for (std::size_t c : cells) {
+        const std::int64_t* n = &mesh.cell_nodes[3 * c];
+        if ((n[0] == a || n[1] == a || n[2] == a) && (n[0] == b || n[1] == b || n[2] == b))
+          return true;
+      }
+      return false;
+    };
+    const double* o = &mesh.node_xyz[3 * centre];
+    int diagonals = 0;
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j) {
+        if (share_a_cell(corners[i], corners[j])) continue;
+        ++diagonals;
+        const double* a = &mesh.node_xyz[3 * corners[i]];
+        const double* b = &mesh.node_xyz[3 * corners[j]];
+        const double cross = (b[0] - a[0]) * (o[1] - a[1]) - (b[1] - a[1]) * (o[0] - a[0]);
+        EXPECT_NEAR(cross, 0.0, 1e-14) << "element " << element;
+        const double mid_x = 0.5 * (a[0] + b[0]), mid_y = 0.5 * (a[1] + b[1]);
+        if (std::hypot(o[0] - mid_x, o[1] - mid_y) > 1e-6) ++non_parallelograms;
+      }
+    EXPECT_EQ(diagonals, 2);
+  }
+  // The recombined quadrangles are not all parallelograms: the centre is not their midpoint.
+  EXPECT_GT(non_parallelograms, 0u);
+}
+
+// Why crossed: a mesh of linear triangles locks under a volume constraint when it has about
+// as many independent cell volume constraints (one per triangle) as velocity unknowns. On a
+// crossed mesh each quadrangle's four constraints are dependent (the rank of the cells'
+// divergence rows falls by one per quadrangle); on gmsh's plain triangles they are not. A
+// centre off the diagonals' crossing (e.g. the corners' mean) would lose this.
+TEST(GmshMesh, CrossedMeshHasOneDependentVolumeConstraintPerQuadrangle) {
+  auto divergence_rank = [](const Mesh& mesh) {
+    // Row c: the divergence of the velocity in cell c, linear in the nodal velocities.
+    Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(mesh.cell_count()),
+                                                 static_cast<Eigen::Index>(2 * mesh.node_count()));
+    for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
+      const std::int64_t* n = &mesh.cell_nodes[3 * c];
+      for (int k = 0; k < 3; ++k) {
+        // grad N_k = perp(x_{k+2} - x_{k+1}) / (2 A); the factor 1 / (2 A) does not change rank.
+        const double* p = &mesh.node_xyz[3 * n[(k + 1) % 3]];
+        const double* q = &mesh.node_xyz[3 * n[(k + 2) % 3]];
+        rows(static_cast<Eigen::Index>(c), 2 * n[k]) = p[1] - q[1];
+        rows(static_cast<Eigen::Index>(c), 2 * n[k] + 1) = q[0] - p[0];
+      }
+    }
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(rows);
+    lu.setThreshold(1e-10);
+    return static_cast<std::size_t>(lu.rank());
+  };
+  const Mesh plain = read_gmsh_mesh(test_data("two_squares.geo"), {2, 0.5, false});
+  EXPECT_EQ(divergence_rank(plain), plain.cell_count());
+  const Mesh crossed = read_gmsh_mesh(test_data("two_squares.geo"), {2, 0.5, false, true});
+  std::set<std::size_t> quadrangles(crossed.cell_element_tags.begin(),
+                                    crossed.cell_element_tags.end());
+  EXPECT_EQ(divergence_rank(crossed), crossed.cell_count() - quadrangles.size());
+}
+
+TEST(GmshMesh, CrossedMshQuadrangleIsCutIntoFour) {
+  const Mesh mesh = read_gmsh_mesh(test_data("quads.msh"), {2, 0.5, false, true});
+  ASSERT_EQ(mesh.cell_count(), 4u);
+  ASSERT_EQ(mesh.node_count(), 5u);
+  for (std::size_t c = 0; c < 4; ++c) EXPECT_NEAR(signed_cell_measure(mesh, c), 0.25, 1e-15);
+  EXPECT_EQ(mesh.node_xyz[3 * 4], 0.5);
+  EXPECT_EQ(mesh.node_xyz[3 * 4 + 1], 0.5);
 }
 
 TEST(GmshMesh, WrongDimensionFindsNoCells) {

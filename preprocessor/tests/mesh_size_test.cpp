@@ -41,6 +41,13 @@ TEST(MeshSize, EstimateOf2DRectangle) {
   expect_estimate_close(test_data("two_squares.geo"), options);
 }
 
+TEST(MeshSize, EstimateOfCrossed2DRectangle) {
+  // Quadrangles of about h^2, four triangles each: about 1.7 times the plain mesh's cells.
+  MeshingOptions options{2, 0.02, false, true};
+  options.size_check.points_per_cell = 4;
+  expect_estimate_close(test_data("two_squares.geo"), options);
+}
+
 TEST(MeshSize, EstimateOf3DCube) {
   // OpenCASCADE kernel: the unit cube's exact volume.
   MeshingOptions options{3, 0.08, false};

@@ -174,6 +174,12 @@ TEST_F(BadScene, UnsupportedPointsPerCell) {
                {"points_per_cell", "1, 3, 4, 9, 16"});
 }
 
+TEST_F(BadScene, CrossedCellsAre2DOnly) {
+  const auto scene = replaced(replaced(kScene, "dimension = 2", "dimension = 3"),
+                              "points_per_cell = 4", "points_per_cell = 4\ncrossed = true");
+  expect_error(scene, "scene.toml", line_of(scene, "crossed"), {"crossed", "2D only"});
+}
+
 TEST_F(BadScene, StageUsesAnUnknownBoundary) {
   const auto scene = replaced(kScene, "boundaries = [\"bottom\"]", "boundaries = [\"gate\"]");
   expect_error(scene, "scene.toml", line_of(scene, "boundaries = "), {"gate"});

@@ -27,9 +27,10 @@ struct MeshSizeEstimate {
 // meshed at `cell_size`, and the memory they need. A cell is counted as an equilateral
 // triangle (sqrt(3)/4 h^2) in 2D and as h^3 / 4.7 in 3D: gmsh's tetrahedra with edges of about
 // h are on average 1.8 times as large as the regular tetrahedron (h^3 / (6 sqrt 2)), measured on
-// the unit cube at h = 0.04 and 0.02 m.
+// the unit cube at h = 0.04 and 0.02 m. A crossed 2D mesh (MeshingOptions::crossed) cuts
+// quadrangles of about h^2 into four triangles: h^2 / 4 a cell.
 MeshSizeEstimate estimate_mesh_size(double measure, int dimension, double cell_size,
-                                    int points_per_cell);
+                                    int points_per_cell, bool crossed = false);
 
 // The memory this process may use, in bytes: the smaller of the memory the system reports
 // available (/proc/meminfo MemAvailable, else the physical memory) and a cgroup limit (a

@@ -62,6 +62,7 @@ struct Scene {
   double cell_size = 0;
   int cell_size_line = 0;  // scene.toml line of `cell_size`, for the memory check's refusal
   int points_per_cell = 0;
+  bool crossed = false;  // [mesh] crossed: quadrangles cut into four (MeshingOptions::crossed)
   std::vector<double> gravity;  // `dimension` components
   std::vector<solver::Material> materials;
   std::vector<Region> regions;
