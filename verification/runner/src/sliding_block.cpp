@@ -27,6 +27,10 @@ void run_sliding_block(const CaseContext& context, CaseResult& result) {
   check_slide(
       run_scene(context, context.source / "scene_smoothing.toml", context.work / "smoothing"),
       "acceleration along the incline, volumetric_smoothing = true");
+  // And on a crossed mesh ([mesh] crossed = true, README.md): the contact boundary on the
+  // recombined incline and the cut cells must give the same closed form.
+  check_slide(run_scene(context, context.source / "scene_crossed.toml", context.work / "crossed"),
+              "acceleration along the incline, crossed mesh");
 
   std::vector<std::vector<double>> rows;
   for (std::size_t i = 0; i < block.time.size(); ++i)
