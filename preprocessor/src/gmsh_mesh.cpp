@@ -303,22 +303,38 @@ struct GmshElements {
   std::vector<std::size_t> node_tags;
 };
 
+// gmsh's elements of one geometric entity, in blocks of one element type each.
+struct ElementBlocks {
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, node_tags;
+
+  ElementBlocks(int dim, int entity) {
+    gmsh::model::mesh::getElements(types, tags, node_tags, dim, entity);
+  }
+  // Block `b` appended to `out` as it is.
+  void append(std::size_t b, GmshElements& out) const {
+    out.tags.insert(out.tags.end(), tags[b].begin(), tags[b].end());
+    out.node_tags.insert(out.node_tags.end(), node_tags[b].begin(), node_tags[b].end());
+  }
+  InputError wrong_type(const std::filesystem::path& geometry, int dim, int entity, std::size_t b,
+                        const std::string& what_is_expected) const {
+    return InputError(geometry.string(), 0,
+                      entity_words(dim, entity) + " has " + std::to_string(tags[b].size()) +
+                          " elements of type " + element_name(types[b]) + "; Lituya needs " +
+                          what_is_expected);
+  }
+};
+
 // The elements of one geometric entity, all of `expected_type`.
 GmshElements entity_elements(const std::filesystem::path& geometry, int dim, int entity,
                              int expected_type, const std::string& what_is_expected) {
-  std::vector<int> types;
-  std::vector<std::vector<std::size_t>> tags, node_tags;
-  gmsh::model::mesh::getElements(types, tags, node_tags, dim, entity);
+  const ElementBlocks blocks(dim, entity);
   GmshElements out;
-  for (std::size_t t = 0; t < types.size(); ++t) {
-    if (tags[t].empty()) continue;
-    if (types[t] != expected_type)
-      throw InputError(geometry.string(), 0,
-                       entity_words(dim, entity) + " has " + std::to_string(tags[t].size()) +
-                           " elements of type " + element_name(types[t]) + "; Lituya needs " +
-                           what_is_expected);
-    out.tags.insert(out.tags.end(), tags[t].begin(), tags[t].end());
-    out.node_tags.insert(out.node_tags.end(), node_tags[t].begin(), node_tags[t].end());
+  for (std::size_t b = 0; b < blocks.types.size(); ++b) {
+    if (blocks.tags[b].empty()) continue;
+    if (blocks.types[b] != expected_type)
+      throw blocks.wrong_type(geometry, dim, entity, b, what_is_expected);
+    blocks.append(b, out);
   }
   return out;
 }
@@ -416,23 +432,20 @@ std::optional<std::array<double, 3>> diagonals_crossing(const std::array<double,
 GmshElements crossed_entity_elements(
     const std::filesystem::path& geometry, int dim, int entity,
     const std::unordered_map<std::size_t, std::array<double, 3>>& gmsh_xyz, CentreNodes& centres) {
-  std::vector<int> types;
-  std::vector<std::vector<std::size_t>> tags, node_tags;
-  gmsh::model::mesh::getElements(types, tags, node_tags, dim, entity);
+  const ElementBlocks blocks(dim, entity);
+  const auto& tags = blocks.tags;
+  const auto& node_tags = blocks.node_tags;
   GmshElements out;
-  for (std::size_t t = 0; t < types.size(); ++t) {
+  for (std::size_t t = 0; t < blocks.types.size(); ++t) {
     if (tags[t].empty()) continue;
-    if (types[t] == 2) {  // 3-node triangle
-      out.tags.insert(out.tags.end(), tags[t].begin(), tags[t].end());
-      out.node_tags.insert(out.node_tags.end(), node_tags[t].begin(), node_tags[t].end());
+    if (blocks.types[t] == 2) {  // 3-node triangle
+      blocks.append(t, out);
       continue;
     }
-    if (types[t] != 3)  // 4-node quadrangle
-      throw InputError(geometry.string(), 0,
-                       entity_words(dim, entity) + " has " + std::to_string(tags[t].size()) +
-                           " elements of type " + element_name(types[t]) +
-                           "; a crossed mesh needs linear quadrangles (gmsh type 3) or "
-                           "triangles (gmsh type 2)");
+    if (blocks.types[t] != 3)  // 4-node quadrangle
+      throw blocks.wrong_type(geometry, dim, entity, t,
+                              "linear quadrangles (gmsh type 3) or triangles (gmsh type 2) for a "
+                              "crossed mesh");
     for (std::size_t q = 0; q < tags[t].size(); ++q) {
       const std::size_t* corner = &node_tags[t][4 * q];
       std::array<std::array<double, 3>, 4> x;
