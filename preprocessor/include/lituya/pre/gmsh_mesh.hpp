@@ -22,11 +22,12 @@ struct MeshingOptions {
   double cell_size = 0.01;  // m, largest edge length gmsh may use
   bool verbose = false;     // let gmsh print its progress
   // 2D only. gmsh recombines its triangles into quadrangles (Mesh.RecombineAll) and each
-  // quadrangle is cut at its centre into four triangles ("crossed" or criss-cross cells).
-  // Linear triangles in pairs lock under a volume constraint (incompressible flow, a Coulomb
-  // flow at zero dilation): a mesh of them has about as many such constraints as velocity
-  // unknowns. In a crossed quadrangle one of the four constraints follows from the other
-  // three, so the mesh can deform at constant volume (scientific manual 4.5).
+  // quadrangle is cut into four triangles where its diagonals cross ("crossed" or
+  // criss-cross cells). Linear triangles in pairs lock under a volume constraint
+  // (incompressible flow, a Coulomb flow at zero dilation): a mesh of them has about as many
+  // such constraints as velocity unknowns. In a crossed quadrangle one of the four
+  // constraints follows from the other three, so the mesh can deform at constant volume
+  // (scientific manual, section 3).
   bool crossed = false;
   MeshSizeCheck size_check = {};
 };
@@ -42,8 +43,8 @@ MeshSizeEstimate estimate_gmsh_mesh(const std::filesystem::path& geometry,
 // dimension `options.dimension` (nodes renumbered from 0, cells positively oriented) with the
 // physical groups. Throws InputError naming the geometry file for anything gmsh rejects, for
 // elements other than linear triangles / tetrahedra (with `crossed`, also quadrangles, each
-// cut into four triangles around a new node at its centre), and for inverted or degenerate
-// cells.
+// cut into four triangles around a new node where its diagonals cross), and for inverted or
+// degenerate cells.
 // With options.size_check enabled, refuses (InputError at the scene's cell_size line) a .geo
 // whose estimated mesh needs more memory than is available, before meshing it.
 // Not thread-safe: gmsh is one process-wide instance (opened and closed by each call).
