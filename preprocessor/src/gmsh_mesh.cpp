@@ -396,12 +396,12 @@ void orient_cells(Mesh& mesh, std::size_t begin, std::size_t end, double cell_si
     std::swap(mesh.cell_nodes[cell * corners + 1], mesh.cell_nodes[cell * corners + 2]);
 }
 
-// The nodes of a crossed mesh that gmsh does not know: one at the centre of each quadrangle.
-// They get tags above every gmsh node tag, so that the cells can be assembled with gmsh tags
-// as before and renumbered once.
-struct CentreNodes {
-  std::size_t next_tag = 0;
+// Node coordinates by gmsh tag. A crossed mesh adds one node at the centre of each
+// quadrangle, tagged above every gmsh tag (`next_tag`), so the cells are assembled with tags
+// as gmsh's are and renumbered once.
+struct NodesByTag {
   std::unordered_map<std::size_t, std::array<double, 3>> xyz;
+  std::size_t next_tag = 0;
 };
 
 // The point where a quadrangle's diagonals cross, or nothing when they do not (a
@@ -429,9 +429,8 @@ std::optional<std::array<double, 3>> diagonals_crossing(const std::array<double,
 // recombination may leave a few) as they are, each quadrangle (corners a b c d) as the four
 // triangles (a b o) (b c o) (c d o) (d a o) around the point o where its diagonals cross.
 // The four keep the quadrangle's element tag, so an error about one names what gmsh wrote.
-GmshElements crossed_entity_elements(
-    const std::filesystem::path& geometry, int dim, int entity,
-    const std::unordered_map<std::size_t, std::array<double, 3>>& gmsh_xyz, CentreNodes& centres) {
+GmshElements crossed_entity_elements(const std::filesystem::path& geometry, int dim, int entity,
+                                     NodesByTag& nodes) {
   const ElementBlocks blocks(dim, entity);
   const auto& tags = blocks.tags;
   const auto& node_tags = blocks.node_tags;
@@ -450,8 +449,8 @@ GmshElements crossed_entity_elements(
       const std::size_t* corner = &node_tags[t][4 * q];
       std::array<std::array<double, 3>, 4> x;
       for (int k = 0; k < 4; ++k) {
-        const auto found = gmsh_xyz.find(corner[k]);
-        if (found == gmsh_xyz.end())
+        const auto found = nodes.xyz.find(corner[k]);
+        if (found == nodes.xyz.end())
           throw InputError(geometry.string(), 0,
                            "element " + std::to_string(tags[t][q]) + " uses node " +
                                std::to_string(corner[k]) + ", which the file does not define");
@@ -464,8 +463,8 @@ GmshElements crossed_entity_elements(
                              node_list({corner, corner + 4}) + ") in " + entity_words(dim, entity) +
                              " is not convex: its diagonals do not cross, so it cannot be "
                              "cut into four triangles");
-      const std::size_t centre_tag = centres.next_tag++;
-      centres.xyz[centre_tag] = *centre;
+      const std::size_t centre_tag = nodes.next_tag++;
+      nodes.xyz[centre_tag] = *centre;
       for (int k = 0; k < 4; ++k) {
         out.tags.push_back(tags[t][q]);
         out.node_tags.insert(out.node_tags.end(), {corner[k], corner[(k + 1) % 4], centre_tag});
@@ -490,11 +489,10 @@ Mesh read_current_model(const std::filesystem::path& geometry, const MeshingOpti
   std::vector<std::size_t> all_tags;
   std::vector<double> all_xyz, parametric;
   gmsh::model::mesh::getNodes(all_tags, all_xyz, parametric, -1, -1, false, false);
-  std::unordered_map<std::size_t, std::array<double, 3>> gmsh_xyz;
-  CentreNodes centres;
+  NodesByTag nodes;
   for (std::size_t i = 0; i < all_tags.size(); ++i) {
-    gmsh_xyz[all_tags[i]] = {all_xyz[3 * i], all_xyz[3 * i + 1], all_xyz[3 * i + 2]};
-    centres.next_tag = std::max(centres.next_tag, all_tags[i] + 1);
+    nodes.xyz[all_tags[i]] = {all_xyz[3 * i], all_xyz[3 * i + 1], all_xyz[3 * i + 2]};
+    nodes.next_tag = std::max(nodes.next_tag, all_tags[i] + 1);
   }
 
   // Cells, entity by entity (orientation is a per-entity matter), still with gmsh node tags.
@@ -504,7 +502,7 @@ Mesh read_current_model(const std::filesystem::path& geometry, const MeshingOpti
   gmsh::model::getEntities(entities, dim);
   for (const auto& [entity_dim, entity] : entities) {
     GmshElements e = options.crossed
-                         ? crossed_entity_elements(geometry, entity_dim, entity, gmsh_xyz, centres)
+                         ? crossed_entity_elements(geometry, entity_dim, entity, nodes)
                          : entity_elements(geometry, entity_dim, entity, cell_type, cell_words);
     const std::size_t begin = mesh.cell_element_tags.size();
     mesh.cell_element_tags.insert(mesh.cell_element_tags.end(), e.tags.begin(), e.tags.end());
@@ -528,21 +526,14 @@ Mesh read_current_model(const std::filesystem::path& geometry, const MeshingOpti
   for (std::size_t tag : cell_gmsh_nodes) mesh.cell_nodes.push_back(node_index.at(tag));
 
   mesh.node_xyz.assign(3 * gmsh_node_tag.size(), 0.0);
-  std::vector<bool> found(gmsh_node_tag.size(), false);
-  auto place = [&](std::size_t tag, const std::array<double, 3>& xyz) {
-    auto it = node_index.find(tag);
-    if (it == node_index.end()) return;
-    const auto n = static_cast<std::size_t>(it->second);
-    std::copy_n(xyz.data(), 3, &mesh.node_xyz[3 * n]);
-    found[n] = true;
-  };
-  for (const auto& [tag, xyz] : gmsh_xyz) place(tag, xyz);
-  for (const auto& [tag, xyz] : centres.xyz) place(tag, xyz);
-  for (std::size_t n = 0; n < found.size(); ++n)
-    if (!found[n])
+  for (std::size_t n = 0; n < gmsh_node_tag.size(); ++n) {
+    const auto found = nodes.xyz.find(gmsh_node_tag[n]);
+    if (found == nodes.xyz.end())
       throw InputError(geometry.string(), 0,
                        "an element uses node " + std::to_string(gmsh_node_tag[n]) +
                            ", which the file does not define");
+    std::copy_n(found->second.data(), 3, &mesh.node_xyz[3 * n]);
+  }
   if (dim == 2) {
     // Plane strain lives in the x-y plane.
     for (std::size_t n = 0; n < gmsh_node_tag.size(); ++n)
