@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """How much of the water's pressure lies in a crossed mesh's force-free pressure mode.
 
 A quadrangle cut into four triangles at its diagonals' crossing (`[mesh] crossed = true`)
@@ -17,11 +17,11 @@ the mode's share of the pressure's deviation from the quadrangle mean (an A-weig
 Were the deviations random among the three non-mean patterns, that share would be about a
 third; well below it, the mode is not being fed.
 
-    python3 crossed_pressure_mode.py CASE_FOLDER [STAGE] [EVERY]
+    /usr/bin/python3 crossed_pressure_mode.py CASE_FOLDER [STAGE] [EVERY]
 
 CASE_FOLDER is what `lituya run` or `lituya pre` wrote (geometry.vtu, output/); the liquid
-output needs `pressure` and `volume` in `[output] liquid_fields`. Needs python3-vtk9 and
-python3-numpy.
+output needs `pressure` and `volume` in `[output] liquid_fields`. Needs Debian's python3-vtk9
+and python3-numpy (the system Python, not a virtual one).
 """
 import glob
 import re
