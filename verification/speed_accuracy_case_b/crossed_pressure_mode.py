@@ -40,9 +40,12 @@ def read_vtu(path):
 
 
 def triangles(mesh):
-    """The mesh's triangles (VTK type 5) as node triples; geometry.vtu lists them first."""
-    cells = [c for c in range(mesh.GetNumberOfCells()) if mesh.GetCellType(c) == 5]
-    return np.array([[mesh.GetCell(c).GetPointId(i) for i in range(3)] for c in cells])
+    """The mesh's triangles (VTK type 5) as node triples, and for every VTK cell of the mesh
+    its triangle's index (-1 for the boundary lines geometry.vtu also holds)."""
+    ids = [c for c in range(mesh.GetNumberOfCells()) if mesh.GetCellType(c) == 5]
+    index = -np.ones(mesh.GetNumberOfCells() + 1, dtype=int)  # the last entry: not found
+    index[ids] = np.arange(len(ids))
+    return np.array([[mesh.GetCell(c).GetPointId(i) for i in range(3)] for c in ids]), index
 
 
 def divergence_row(corners):
@@ -90,7 +93,7 @@ def main():
     every = int(sys.argv[3]) if len(sys.argv) > 3 else 10
     mesh = read_vtu(f"{case}/geometry.vtu")
     xy = vtk_to_numpy(mesh.GetPoints().GetData())[:, :2]
-    cells = triangles(mesh)
+    cells, triangle_of_cell = triangles(mesh)
     quads = crossed_quadrangles(xy, cells)
     print(f"{len(quads)} crossed quadrangles ({4 * len(quads)} of {len(cells)} triangles)")
     locator = vtk.vtkCellLocator()
@@ -104,7 +107,7 @@ def main():
         x = vtk_to_numpy(liquid.GetPoints().GetData())
         p = vtk_to_numpy(liquid.GetPointData().GetArray("pressure"))
         v = vtk_to_numpy(liquid.GetPointData().GetArray("volume"))
-        cell = np.array([locator.FindCell(x[q]) for q in range(len(x))])
+        cell = triangle_of_cell[[locator.FindCell(x[q]) for q in range(len(x))]]
         inside = cell >= 0
         pv = np.bincount(cell[inside], weights=(p * v)[inside], minlength=len(cells))
         volume = np.bincount(cell[inside], weights=v[inside], minlength=len(cells))
