@@ -28,6 +28,7 @@
 #include "lituya/pre/preprocess.hpp"
 #include "lituya/solver/solve.hpp"
 #include "lituya/sweep/definition.hpp"
+#include "lituya/sweep/repeats.hpp"
 #include "lituya/sweep/sweep.hpp"
 #include "lituya/verify/runner.hpp"
 
@@ -88,7 +89,11 @@ continues a stopped sweep in DIR: a run whose scene copy is unchanged and whose 
 completed on the same case files is kept, not run again. A run whose first stages read the
 same inputs as those of a run that finished (a key that only a later stage reads) starts
 from that run's end-of-stage checkpoint instead of running them again, with the same results
-to the last bit; --no-reuse runs every run whole. Exit code 5: at least one run of the sweep
+to the last bit; --no-reuse runs every run whole. --repeats N makes each run N times with
+the last stage's Courant number changed by 2e-4 of itself per repeat (a change far below
+any truncation error) and reports each measure's mean and spread (repeats.csv): a setting's
+effect, or a refinement step, is resolved only where it exceeds that spread; a sweep over
+mesh.cell_size then extrapolates the means. Exit code 5: at least one run of the sweep
 failed (the table marks it; the others are complete).)";
 
 const std::vector<std::string> kCommands = {"pre", "solve", "post", "run", "verify", "sweep"};
@@ -151,6 +156,7 @@ struct Options {
   std::vector<std::string> measures;    // sweep
   bool dry_run = false;                 // sweep
   bool no_reuse = false;                // sweep
+  int repeats = 0;                      // sweep: 0 = as the sweep file says (default 1)
   bool allow_incomplete = false;        // post
   bool allow_large_mesh = false;        // pre, run
   bool resume = false;                  // solve, sweep
@@ -277,9 +283,10 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
     Command c = make("sweep",
                      "lituya sweep SCENE.toml --parameter KEY --values V1,V2,... [--measure M,...] "
                      "[-o DIR]\n              [--combine grid|zip] [--jobs N] [--threads N] "
-                     "[--force | --resume] [--dry-run]\n              [--no-reuse]\n"
+                     "[--force | --resume] [--dry-run]\n              [--no-reuse] [--repeats N]\n"
                      "       lituya sweep SWEEP.toml [--measure M,...] [-o DIR] [--jobs N] "
-                     "[--threads N] [--force | --resume]\n              [--dry-run] [--no-reuse]",
+                     "[--threads N] [--force | --resume]\n              [--dry-run] [--no-reuse] "
+                     "[--repeats N]",
                      std::string("Run the scene once per value of KEY, or per combination of the "
                                  "values of several\nKEYs (pre + solve + post), then tabulate and "
                                  "plot the measures against it.\n\n") +
@@ -299,7 +306,10 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
         "what to tabulate and plot (repeatable)")("dry-run", po::bool_switch(&o.dry_run),
                                                   "check and list the runs, run nothing")(
         "no-reuse", po::bool_switch(&o.no_reuse),
-        "run every run whole, even the first stages it shares with another run");
+        "run every run whole, even the first stages it shares with another run")(
+        "repeats", po::value(&o.repeats)->value_name("N"),
+        "make each run N times (2-20), the last stage's Courant number changed by 2e-4 of "
+        "itself per repeat, and report each measure's mean and spread");
     output(c.options, "the sweep folder (default: sweep_<KEY>/ next to the scene file)");
     threads_option(c.options);
     force(c.options, "write into a sweep folder that already holds files and run every run again");
@@ -590,6 +600,14 @@ int run_sweep(const Options& o, std::ostream& errors) {
         definition.measures.push_back(item);
   }
   if (!o.output.empty()) definition.output = o.output;
+  if (o.repeats != 0) {
+    if (o.repeats < 1 || o.repeats > lituya::sweep::kMaxRepeats)
+      throw UsageError("sweep", "--repeats must be 1 (no repeats) to " +
+                                    std::to_string(lituya::sweep::kMaxRepeats) + " (got " +
+                                    std::to_string(o.repeats) + ")");
+    definition.repeats = o.repeats;
+    definition.repeats_line = 0;
+  }
   lituya::sweep::SweepOptions options;
   options.threads = o.threads;
   options.jobs = o.jobs;

@@ -11,6 +11,7 @@
 #include "lituya/common/csv_writer.hpp"
 #include "lituya/sweep/measures.hpp"
 #include "lituya/sweep/progress.hpp"
+#include "lituya/sweep/repeats.hpp"
 #include "lituya/sweep/sweep.hpp"
 
 namespace lituya::sweep {
@@ -137,19 +138,16 @@ std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result) {
   std::map<std::string, std::vector<const RunRecord*>> groups;
   for (const RunRecord& run : result.runs) {
     if (run.status != RunStatus::kOk) continue;
-    std::string group;
-    for (std::size_t p = 0; p < run.values.size(); ++p)
-      if (p != cell_key)
-        group += (group.empty() ? "" : " ") + result.labels[p] + "=" + run.values[p];
+    const std::string group = group_of(result, run, cell_key);  // without the repeat key
     if (!groups.count(group)) group_order.push_back(group);
     groups[group].push_back(&run);
   }
   std::vector<MeshConvergenceRow> rows;
   for (const std::string& group : group_order) {
     for (std::size_t m = 0; m < result.measures.size(); ++m) {
-      // The finest run of each distinct cell size with a value (the first such run where a
-      // size appears twice).
-      std::map<double, const RunRecord*> by_size;
+      // The runs of each distinct cell size with a value: one, or the repeats (repeats.hpp),
+      // whose mean is the value.
+      std::map<double, std::vector<const RunRecord*>> by_size;
       for (const RunRecord* run : groups[group]) {
         double h = NAN;
         try {
@@ -159,7 +157,7 @@ std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result) {
         } catch (const std::exception&) {
         }
         if (!(h > 0) || !std::isfinite(run->measures[m])) continue;
-        by_size.emplace(h, run);
+        by_size[h].push_back(run);
       }
       if (by_size.size() < 3) continue;
       MeshConvergenceRow row;
@@ -168,11 +166,27 @@ std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result) {
       std::array<double, 3> h{}, f{};
       auto it = by_size.begin();
       for (int k = 0; k < 3; ++k, ++it) {
+        std::vector<double> values;
+        for (const RunRecord* run : it->second) values.push_back(run->measures[m]);
         h[k] = it->first;
-        f[k] = it->second->measures[m];
-        row.runs[k] = it->second->number;
+        row.spread[k] = spread_of(values);
+        f[k] = row.spread[k].mean;
+        row.runs[k] = it->second.front()->number;
       }
       row.estimate = richardson_estimate(h, f);
+      // With repeats: is the last refinement's change larger than the readings' own scatter?
+      const Spread& fine = row.spread[0];
+      const Spread& medium = row.spread[1];
+      if (fine.count > 1 && medium.count > 1) {
+        const double standard_error =
+            std::sqrt(fine.sd * fine.sd / fine.count + medium.sd * medium.sd / medium.count);
+        if (std::abs(fine.mean - medium.mean) < 2.0 * standard_error) {
+          const std::string within =
+              "the last change is within twice its standard error from the repeats: not resolved";
+          row.estimate.note =
+              row.estimate.note.empty() ? within : row.estimate.note + "; " + within;
+        }
+      }
       rows.push_back(row);
     }
   }
@@ -181,9 +195,13 @@ std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result) {
 
 void write_convergence_table(const std::filesystem::path& file,
                              const std::vector<MeshConvergenceRow>& rows) {
-  CsvWriter table({"group", "measure", "runs", "h_fine", "h_medium", "h_coarse", "value_fine",
-                   "value_medium", "value_coarse", "change_fine", "behaviour", "observed_order",
-                   "extrapolated", "gci_fine", "note"});
+  CsvWriter table({"group",          "measure",        "runs",
+                   "h_fine",         "h_medium",       "h_coarse",
+                   "value_fine",     "value_medium",   "value_coarse",
+                   "change_fine",    "behaviour",      "observed_order",
+                   "extrapolated",   "gci_fine",       "repeats_fine",
+                   "repeats_medium", "repeats_coarse", "sd_fine",
+                   "sd_medium",      "sd_coarse",      "note"});
   for (const MeshConvergenceRow& row : rows) {
     const RichardsonEstimate& e = row.estimate;
     table.text(row.group).text(row.measure);
@@ -192,7 +210,10 @@ void write_convergence_table(const std::filesystem::path& file,
     for (double h : e.cell_size) table.number(h);
     for (double f : e.value) table.number(f);
     table.number(e.change_fine).text(behaviour_text(e.behaviour));
-    table.number(e.order).number(e.extrapolated).number(e.gci_fine).text(e.note);
+    table.number(e.order).number(e.extrapolated).number(e.gci_fine);
+    for (const Spread& s : row.spread) table.number(s.count);
+    for (const Spread& s : row.spread) table.number(s.sd);
+    table.text(e.note);
     table.end_row();
   }
   table.write(file);

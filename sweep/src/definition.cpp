@@ -12,6 +12,7 @@
 
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/toml_reader.hpp"
+#include "lituya/sweep/repeats.hpp"
 
 namespace lituya::sweep {
 
@@ -247,6 +248,12 @@ SweepDefinition read_sweep_file(const fs::path& file) {
                                                                               : Combination::kGrid;
   d.measures = root.strings_or("measures", {});
   if (root.has("output")) d.output = folder / root.string("output");
+  if (root.has("repeats")) {
+    d.repeats_line = root.line_of("repeats");
+    d.repeats = static_cast<int>(root.integer_or("repeats", 1));
+    if (d.repeats < 1 || d.repeats > kMaxRepeats)
+      root.fail("'repeats' must be 1 (no repeats) to " + std::to_string(kMaxRepeats), "repeats");
+  }
   root.finish();
   combinations(d);  // zip lengths, repeated keys and the number of runs, at their lines
   return d;
@@ -282,6 +289,7 @@ std::string sweep_file_text(const SweepDefinition& d,
       "DIR\n"
       "format = \"lituya-sweep\"\nversion = 1\n";
   text += "scene = " + quoted(fs::absolute(d.scene).lexically_normal().string()) + "\n";
+  if (d.repeats > 1) text += "repeats = " + std::to_string(d.repeats) + "\n";
   std::vector<std::string> measures;
   for (const std::string& m : measure_names) measures.push_back(quoted(m));
   if (d.parameters.size() == 1) {

@@ -36,6 +36,7 @@
 #include "lituya/sweep/convergence.hpp"
 #include "lituya/sweep/measures.hpp"
 #include "lituya/sweep/progress.hpp"
+#include "lituya/sweep/repeats.hpp"
 #include "lituya/sweep/scene_edit.hpp"
 
 namespace lituya::sweep {
@@ -164,6 +165,7 @@ void write_table(const fs::path& file, const SweepResult& result) {
 
 // sweep.json: the sweep and every run, machine-readable, each number as the run gave it.
 void write_summary(const SweepResult& result, const SweepDefinition& definition,
+                   const std::vector<RepeatSummaryRow>& repeats,
                    const std::vector<MeshConvergenceRow>& convergence) {
   Json runs = Json::array();
   for (const RunRecord& r : result.runs) {
@@ -208,9 +210,26 @@ void write_summary(const SweepResult& result, const SweepDefinition& definition,
            {"observed_order", json_number(e.order)},
            {"extrapolated", json_number(e.extrapolated)},
            {"gci_fine", json_number(e.gci_fine)},
+           {"repeats", {row.spread[0].count, row.spread[1].count, row.spread[2].count}},
+           {"sd",
+            {json_number(row.spread[0].sd), json_number(row.spread[1].sd),
+             json_number(row.spread[2].sd)}},
            {"note", e.note}});
     }
     summary["mesh_convergence"] = rows;
+  }
+  if (result.repeat_parameter >= 0) {
+    summary["repeat_key"] = result.parameters[static_cast<size_t>(result.repeat_parameter)];
+    Json rows = Json::array();
+    for (const RepeatSummaryRow& row : repeats)
+      rows.push_back({{"group", row.group},
+                      {"measure", row.measure},
+                      {"runs", row.spread.count},
+                      {"mean", json_number(row.spread.mean)},
+                      {"sd", json_number(row.spread.sd)},
+                      {"min", json_number(row.spread.min)},
+                      {"max", json_number(row.spread.max)}});
+    summary["repeats"] = rows;
   }
   write_json_file(result.summary, summary);
 }
@@ -268,7 +287,8 @@ bool read_run_file(RunRecord& run, const std::vector<std::string>& measure_names
 // is not broken by the rows of the other curves. Without measures: the wall time of the runs.
 bool write_plot(const SweepResult& result, const SweepDefinition& definition,
                 const std::vector<bool>& numeric_parameter) {
-  const size_t keys = result.parameters.size();
+  // The repeat key is not plotted against: the repeats lie on top of each other.
+  const size_t keys = result.parameters.size() - (result.repeat_parameter >= 0 ? 1 : 0);
   const bool two_key_grid = keys == 2 && result.combination == Combination::kGrid &&
                             numeric_parameter[0] && numeric_parameter[1];
   const bool against_first =
@@ -751,10 +771,53 @@ std::string format_table(const SweepResult& result) {
   return out.str();
 }
 
-SweepResult run_sweep(const SweepDefinition& definition, const SweepOptions& options) {
+SweepResult run_sweep(const SweepDefinition& user_definition, const SweepOptions& options) {
   // Everything is checked before the sweep folder is written.
-  const SceneText scene(definition.scene);
-  const std::vector<std::vector<size_t>> combos = combinations(definition);
+  const SceneText scene(user_definition.scene);
+  std::vector<std::vector<size_t>> combos = combinations(user_definition);
+  // With repeats, the sweep's keys gain the repeat key (repeats.hpp), varying fastest.
+  SweepDefinition definition = user_definition;
+  if (definition.repeats > 1) {
+    const std::string where = definition.source.empty() ? "--repeats" : definition.source.string();
+    if (definition.repeats > kMaxRepeats)
+      throw InputError(where, definition.repeats_line,
+                       "repeats must be 2 to " + std::to_string(kMaxRepeats) + " (got " +
+                           std::to_string(definition.repeats) + ")");
+    SweepParameter repeat;
+    repeat.key = repeat_key(scene.table(), scene.file());
+    for (const SweepParameter& parameter : definition.parameters)
+      if (parameter.key == repeat.key)
+        throw InputError(where, parameter.line,
+                         "'" + repeat.key +
+                             "' is the key that repeats change (by 2e-4 of itself per repeat); "
+                             "sweep it or repeat the runs, not both");
+    const KeyTarget target = scene.locate(repeat.key);
+    double courant = solver::Stage{}.courant;
+    if (target.present) {
+      try {
+        courant = std::stod(target.current);
+      } catch (const std::exception&) {
+        throw InputError(
+            scene.file().string(), target.line,
+            "'" + repeat.key + "' must be a number for --repeats (got " + target.current + ")");
+      }
+    }
+    repeat.values = repeat_values(courant, definition.repeats);
+    definition.parameters.push_back(repeat);
+    std::vector<std::vector<size_t>> repeated;
+    for (const std::vector<size_t>& combo : combos)
+      for (int k = 0; k < definition.repeats; ++k) {
+        repeated.push_back(combo);
+        repeated.back().push_back(static_cast<size_t>(k));
+      }
+    if (repeated.size() > kMaxRuns)
+      throw InputError(where, definition.repeats_line,
+                       std::to_string(combos.size()) + " runs x " +
+                           std::to_string(definition.repeats) +
+                           " repeats = " + std::to_string(repeated.size()) + " runs, more than " +
+                           std::to_string(kMaxRuns));
+    combos = std::move(repeated);
+  }
   std::vector<KeyTarget> targets;
   std::vector<std::vector<std::string>> literals;
   std::vector<bool> numeric_parameter;
@@ -775,8 +838,9 @@ SweepResult run_sweep(const SweepDefinition& definition, const SweepOptions& opt
     result.labels.push_back(targets[p].label);
   }
   result.combination = definition.combination;
+  if (definition.repeats > 1) result.repeat_parameter = static_cast<int>(targets.size()) - 1;
   for (const Measure& m : measures) result.measures.push_back(m.name);
-  result.folder = default_output(definition);
+  result.folder = default_output(user_definition);
   result.table = result.folder / "sweep.csv";
   result.summary = result.folder / "sweep.json";
   result.plot = result.folder / "sweep.png";
@@ -859,8 +923,14 @@ SweepResult run_sweep(const SweepDefinition& definition, const SweepOptions& opt
                        "finished are kept) or --force to run every run again");
     prepare_output_folder(result.folder, options.overwrite);
   }
-  write_file_atomically(result.folder / "sweep.toml",
-                        sweep_file_text(definition, literals, result.measures));
+  write_file_atomically(
+      result.folder / "sweep.toml",
+      sweep_file_text(
+          user_definition,
+          std::vector<std::vector<std::string>>(
+              literals.begin(),
+              literals.begin() + static_cast<std::ptrdiff_t>(user_definition.parameters.size())),
+          result.measures));
 
   // A run that is not kept runs into its folder whatever an earlier sweep left there.
   const bool overwrite = options.overwrite || options.resume;
@@ -984,6 +1054,14 @@ SweepResult run_sweep(const SweepDefinition& definition, const SweepOptions& opt
   }
   progress.finish();
 
+  const std::vector<RepeatSummaryRow> repeats = repeat_summary(result);
+  std::error_code no_repeats;
+  if (!repeats.empty()) {
+    result.repeats = result.folder / "repeats.csv";
+    write_repeat_table(result.repeats, repeats);
+  } else {
+    fs::remove(result.folder / "repeats.csv", no_repeats);
+  }
   const std::vector<MeshConvergenceRow> convergence = mesh_convergence(result);
   if (!convergence.empty()) {
     result.convergence = result.folder / "convergence.csv";
@@ -993,7 +1071,7 @@ SweepResult run_sweep(const SweepDefinition& definition, const SweepOptions& opt
     std::error_code ignored;
     fs::remove(result.folder / "convergence.csv", ignored);
   }
-  write_summary(result, definition, convergence);
+  write_summary(result, definition, repeats, convergence);
   result.plotted = write_plot(result, definition, numeric_parameter);
   if (options.report) {
     std::string keys;
@@ -1012,10 +1090,11 @@ SweepResult run_sweep(const SweepDefinition& definition, const SweepOptions& opt
       *options.report << reused << " of " << count
                       << " runs started from the end of stages they share with another run "
                          "(--no-reuse runs every run whole)\n";
-    *options.report << format_convergence(convergence);
+    *options.report << format_repeats(repeats) << format_convergence(convergence);
     *options.report << "table: " << result.table.string() << "\n"
                     << "json:  " << result.summary.string() << "\n";
     if (result.plotted) *options.report << "plot:  " << result.plot.string() << "\n";
+    if (!result.repeats.empty()) *options.report << "repeats: " << result.repeats.string() << "\n";
     if (!result.convergence.empty())
       *options.report << "mesh convergence: " << result.convergence.string() << "\n";
     *options.report << "runs:  " << result.folder.string()

@@ -26,6 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "lituya/sweep/repeats.hpp"
+
 namespace lituya::sweep {
 
 struct SweepResult;
@@ -54,13 +56,18 @@ RichardsonEstimate richardson_estimate(const std::array<double, 3>& cell_size,
 struct MeshConvergenceRow {
   std::string group;          // the other parameters' values ("key=value ..."), empty for none
   std::string measure;        // as in sweep.csv
-  std::array<int, 3> runs{};  // run numbers of h1, h2, h3
+  std::array<int, 3> runs{};  // run numbers of h1, h2, h3 (the first repeat of each)
+  // The runs' values at h1, h2, h3: one run each, or the repeats (repeats.hpp), whose means
+  // the estimate is made from (sd NaN for a single run).
+  std::array<Spread, 3> spread{};
   RichardsonEstimate estimate;
 };
 
 // The estimates of a sweep whose parameters include `mesh.cell_size`: for each measure and each
-// set of values of the other parameters, from the three finest distinct cell sizes among the
-// runs that finished with a value of that measure. Nothing for other sweeps, or where fewer than
+// set of values of the other parameters (the repeat key aside), from the three finest distinct
+// cell sizes among the runs that finished with a value of that measure, each size's value the
+// mean of its repeats. With repeats, the note says when the last change is within twice its
+// standard error. Nothing for other sweeps, or where fewer than
 // three cell sizes are left.
 std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result);
 

@@ -31,6 +31,10 @@ struct SweepDefinition {
   std::vector<std::string> measures;  // measure names (see measures.hpp); empty: the default
   std::filesystem::path output;       // the sweep folder; empty: default_output()
   std::filesystem::path source;       // the sweep file, empty when given on the command line
+  // Each run made this many times, the last stage's Courant number changed by 2e-4 of itself
+  // per repeat (repeats.hpp); 1: no repeats. `repeats_line`: its line in the sweep file.
+  int repeats = 1;
+  int repeats_line = 0;
 };
 
 // The most runs a sweep may have (a grid grows fast).
@@ -62,6 +66,7 @@ bool is_sweep_file(const std::filesystem::path& file);
 //   values = [10, 14, 18, 22]                   # numbers, strings or booleans
 //   measures = ["gauge_first_crest"]            # optional
 //   output = "sweep_phi"                        # optional, relative to the sweep file
+//   repeats = 3                                 # optional: each run 3 times (repeats.hpp)
 // Several keys: instead of parameter and values, one [[parameter]] entry per key, and how they
 // combine (optional, default "grid"):
 //   combine = "grid"                            # every combination; "zip": i-th values together

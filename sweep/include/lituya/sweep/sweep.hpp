@@ -91,6 +91,10 @@ struct SweepResult {
   // DIR/convergence.csv (convergence.hpp) when the sweep varies `mesh.cell_size` over at least
   // three sizes that finished; empty otherwise.
   std::filesystem::path convergence;
+  // The index in `parameters` of the repeat key (repeats.hpp), -1 without repeats; and
+  // DIR/repeats.csv, the spread of each measure over the repeats (empty without).
+  int repeat_parameter = -1;
+  std::filesystem::path repeats;
   bool all_ok() const;
 };
 

@@ -1,0 +1,128 @@
+// Repeats of a sweep's runs and the spread of their measures (repeats.hpp says why and how).
+#include "lituya/sweep/repeats.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "lituya/common/csv_writer.hpp"
+#include "lituya/common/input_error.hpp"
+#include "lituya/sweep/measures.hpp"
+#include "lituya/sweep/progress.hpp"
+#include "lituya/sweep/sweep.hpp"
+
+namespace lituya::sweep {
+
+std::string repeat_key(const toml::table& scene, const std::filesystem::path& scene_file) {
+  const toml::array* stages = scene["stage"].as_array();
+  if (!stages || stages->empty() || !stages->back().is_table())
+    throw InputError(scene_file.string(), 0,
+                     "--repeats changes the Courant number of the scene's last [[stage]], but "
+                     "the scene has no [[stage]]");
+  const toml::table& last = *stages->back().as_table();
+  if (auto name = last["name"].value<std::string>()) return "stage." + *name + ".courant";
+  return "stage." + std::to_string(stages->size() - 1) + ".courant";
+}
+
+std::vector<std::string> repeat_values(double courant, int repeats) {
+  std::vector<std::string> values;
+  for (int k = 0; k < repeats; ++k) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", courant * (1.0 - kRepeatCourantStep * k));
+    values.emplace_back(text);
+  }
+  return values;
+}
+
+Spread spread_of(const std::vector<double>& values) {
+  Spread s;
+  double sum = 0;
+  s.min = std::numeric_limits<double>::infinity();
+  s.max = -s.min;
+  for (double v : values) {
+    if (!std::isfinite(v)) continue;
+    ++s.count;
+    sum += v;
+    s.min = std::min(s.min, v);
+    s.max = std::max(s.max, v);
+  }
+  if (s.count == 0) return {0, NAN, NAN, NAN, NAN};
+  s.mean = sum / s.count;
+  double squares = 0;
+  for (double v : values)
+    if (std::isfinite(v)) squares += (v - s.mean) * (v - s.mean);
+  s.sd = s.count > 1 ? std::sqrt(squares / (s.count - 1)) : NAN;
+  return s;
+}
+
+std::string group_of(const SweepResult& result, const RunRecord& run, std::size_t skip) {
+  std::string group;
+  for (std::size_t p = 0; p < run.values.size(); ++p)
+    if (p != skip && static_cast<int>(p) != result.repeat_parameter)
+      group += (group.empty() ? "" : " ") + result.labels[p] + "=" + run.values[p];
+  return group;
+}
+
+std::vector<RepeatSummaryRow> repeat_summary(const SweepResult& result) {
+  if (result.repeat_parameter < 0) return {};
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<const RunRecord*>> groups;
+  for (const RunRecord& run : result.runs) {
+    const std::string group = group_of(result, run);
+    if (!groups.count(group)) order.push_back(group);
+    groups[group].push_back(&run);
+  }
+  std::vector<RepeatSummaryRow> rows;
+  for (const std::string& group : order)
+    for (std::size_t m = 0; m < result.measures.size(); ++m) {
+      std::vector<double> values;
+      for (const RunRecord* run : groups[group])
+        values.push_back(run->status == RunStatus::kOk ? run->measures[m] : NAN);
+      rows.push_back({group, result.measures[m], spread_of(values)});
+    }
+  return rows;
+}
+
+void write_repeat_table(const std::filesystem::path& file,
+                        const std::vector<RepeatSummaryRow>& rows) {
+  CsvWriter table({"group", "measure", "runs", "mean", "sd", "relative_sd", "min", "max"});
+  for (const RepeatSummaryRow& row : rows) {
+    const Spread& s = row.spread;
+    table.text(row.group).text(row.measure).number(s.count).number(s.mean).number(s.sd);
+    table.number(s.mean != 0 ? s.sd / std::abs(s.mean) : NAN).number(s.min).number(s.max);
+    table.end_row();
+  }
+  table.write(file);
+}
+
+std::string format_repeats(const std::vector<RepeatSummaryRow>& rows) {
+  if (rows.empty()) return "";
+  std::vector<std::vector<std::string>> lines{
+      {"measure", "runs", "mean", "sd", "sd / mean", "smallest", "largest"}};
+  const bool grouped = std::any_of(rows.begin(), rows.end(),
+                                   [](const RepeatSummaryRow& r) { return !r.group.empty(); });
+  if (grouped) lines[0].insert(lines[0].begin(), "with");
+  for (const RepeatSummaryRow& row : rows) {
+    const Spread& s = row.spread;
+    char relative[32] = "-";
+    if (std::isfinite(s.sd) && s.mean != 0)
+      std::snprintf(relative, sizeof relative, "%.2g %%", 100.0 * s.sd / std::abs(s.mean));
+    std::vector<std::string> line{row.measure + " (" + measure_unit(row.measure) + ")",
+                                  std::to_string(s.count),
+                                  short_number(s.mean),
+                                  short_number(s.sd),
+                                  relative,
+                                  short_number(s.min),
+                                  short_number(s.max)};
+    if (grouped) line.insert(line.begin(), row.group.empty() ? "-" : row.group);
+    lines.push_back(line);
+  }
+  return "repeats (the last stage's Courant number changed by 2e-4 of itself per repeat; the "
+         "spread is the reading's own scatter):\n" +
+         align_columns(lines);
+}
+
+}  // namespace lituya::sweep

@@ -1,0 +1,184 @@
+#include "lituya/sweep/repeats.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <toml++/toml.h>
+#include <nlohmann/json.hpp>
+
+#include "lituya/common/input_error.hpp"
+#include "lituya/sweep/convergence.hpp"
+#include "lituya/sweep/definition.hpp"
+#include "lituya/sweep/sweep.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace lituya::sweep;
+
+RunRecord run(int number, std::vector<std::string> values, std::vector<double> measures,
+              RunStatus status = RunStatus::kOk) {
+  RunRecord r;
+  r.number = number;
+  r.values = std::move(values);
+  r.measures = std::move(measures);
+  r.status = status;
+  return r;
+}
+
+// Repeat k changes the Courant number by 2e-4 k of itself: 0.5 -> 0.4999, 0.4998 (the runs of
+// verification/speed_accuracy_case_b's crossed-mesh scatter study).
+TEST(Repeats, CourantNumbersStepBy2e4OfThemselves) {
+  EXPECT_EQ(repeat_values(0.5, 3), (std::vector<std::string>{"0.5", "0.4999", "0.4998"}));
+  EXPECT_EQ(repeat_values(0.9, 2), (std::vector<std::string>{"0.9", "0.89982"}));
+}
+
+// The key is the last stage's, by name (the stage the post reads in a scene of stages).
+TEST(Repeats, KeyIsTheLastStagesCourantNumber) {
+  const toml::table scene =
+      toml::parse("[[stage]]\nname = \"gravity\"\ncourant = 0.5\n[[stage]]\nname = \"release\"\n");
+  EXPECT_EQ(repeat_key(scene, "scene.toml"), "stage.release.courant");
+  const toml::table unnamed = toml::parse("[[stage]]\ncourant = 0.5\n[[stage]]\nduration = 1\n");
+  EXPECT_EQ(repeat_key(unnamed, "scene.toml"), "stage.1.courant");
+  EXPECT_THROW(repeat_key(toml::parse("title = \"no stages\"\n"), "scene.toml"),
+               lituya::InputError);
+}
+
+// Sample mean and standard deviation (n - 1): 1, 2, 3 -> 2 and 1; what is not finite (a run
+// without the measure) is left out; one value has no standard deviation.
+TEST(Repeats, SpreadOfFiniteValues) {
+  const Spread s = spread_of({1.0, NAN, 3.0, 2.0});
+  EXPECT_EQ(s.count, 3);
+  EXPECT_DOUBLE_EQ(s.mean, 2.0);
+  EXPECT_DOUBLE_EQ(s.sd, 1.0);
+  EXPECT_DOUBLE_EQ(s.min, 1.0);
+  EXPECT_DOUBLE_EQ(s.max, 3.0);
+  const Spread one = spread_of({4.0});
+  EXPECT_EQ(one.count, 1);
+  EXPECT_DOUBLE_EQ(one.mean, 4.0);
+  EXPECT_TRUE(std::isnan(one.sd));
+  EXPECT_EQ(spread_of({NAN}).count, 0);
+}
+
+// The summary groups the runs by the other keys; a failed run does not count.
+TEST(Repeats, SummaryGroupsTheRunsByTheOtherKeys) {
+  SweepResult result;
+  result.parameters = {"solver.x", "stage.release.courant"};
+  result.labels = {"x", "courant"};
+  result.measures = {"front"};
+  result.repeat_parameter = 1;
+  result.runs = {run(1, {"a", "0.5"}, {1.0}),
+                 run(2, {"a", "0.4999"}, {1.2}),
+                 run(3, {"a", "0.4998"}, {1.4}),
+                 run(4, {"b", "0.5"}, {2.0}),
+                 run(5, {"b", "0.4999"}, {9.0}, RunStatus::kError),
+                 run(6, {"b", "0.4998"}, {2.5})};
+  const std::vector<RepeatSummaryRow> rows = repeat_summary(result);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].group, "x=a");
+  EXPECT_EQ(rows[0].spread.count, 3);
+  EXPECT_NEAR(rows[0].spread.mean, 1.2, 1e-12);
+  EXPECT_NEAR(rows[0].spread.sd, 0.2, 1e-12);
+  EXPECT_EQ(rows[1].group, "x=b");
+  EXPECT_EQ(rows[1].spread.count, 2);
+  EXPECT_DOUBLE_EQ(rows[1].spread.mean, 2.25);
+  EXPECT_NE(format_repeats(rows).find("x=b"), std::string::npos);
+  result.repeat_parameter = -1;
+  EXPECT_TRUE(repeat_summary(result).empty());
+}
+
+// With repeats, the mesh convergence extrapolates each size's mean. The means follow
+// f = 1 + h exactly (order 1, limit 1) while each pair of repeats straddles its mean by
+// +-0.0001: the estimate must give back order 1 and limit 1. A second measure whose repeats
+// scatter by +-0.02 around the same means has a last change (0.005) within twice its standard
+// error (0.02): the note says the change is not resolved.
+TEST(Repeats, MeshConvergenceExtrapolatesTheMeansAndJudgesTheLastChange) {
+  SweepResult result;
+  result.parameters = {"mesh.cell_size", "stage.release.courant"};
+  result.labels = {"cell_size", "courant"};
+  result.measures = {"quiet", "noisy"};
+  result.repeat_parameter = 1;
+  int number = 0;
+  for (double h : {0.02, 0.015, 0.01})
+    for (double sign : {1.0, -1.0})
+      result.runs.push_back(run(++number, {std::to_string(h), sign > 0 ? "0.5" : "0.4999"},
+                                {1.0 + h + sign * 1e-4, 1.0 + h + sign * 0.02}));
+  const std::vector<MeshConvergenceRow> rows = mesh_convergence(result);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].group, "");
+  EXPECT_EQ(rows[0].spread[0].count, 2);
+  EXPECT_NEAR(rows[0].estimate.value[0], 1.01, 1e-12);
+  EXPECT_NEAR(rows[0].estimate.order, 1.0, 1e-6);
+  EXPECT_NEAR(rows[0].estimate.extrapolated, 1.0, 1e-9);
+  EXPECT_EQ(rows[0].estimate.note.find("standard error"), std::string::npos)
+      << rows[0].estimate.note;
+  EXPECT_NE(rows[1].estimate.note.find("standard error"), std::string::npos);
+  EXPECT_NEAR(rows[1].spread[0].sd, 0.02 * std::sqrt(2.0), 1e-12);
+}
+
+// End to end on the test column (about a second a run): three repeats of one friction angle
+// are three runs at release Courant numbers 0.5, 0.4999, 0.4998; repeats.csv holds their
+// mean; they share the gravity stage (run once); sweep.toml records `repeats = 3` and reads
+// back as the same sweep of one key.
+TEST(Repeats, SweepRunsEachRunRepeatedAndSummarisesIt) {
+  const fs::path folder = fs::temp_directory_path() / "lituya_sweep_repeats";
+  fs::remove_all(folder);
+  SweepDefinition d;
+  d.scene = fs::path(LITUYA_SWEEP_TEST_DATA) / "collapse.toml";
+  d.parameters = {{"material.sand.friction_angle", {"30"}}};
+  d.measures = {"front_travel_final"};
+  d.output = folder;
+  d.repeats = 3;
+  const SweepResult result = run_sweep(d, SweepOptions{});
+  ASSERT_TRUE(result.all_ok());
+  ASSERT_EQ(result.runs.size(), 3u);
+  EXPECT_EQ(result.repeat_parameter, 1);
+  EXPECT_EQ(result.parameters[1], "stage.release.courant");
+  EXPECT_EQ(result.runs[2].values[1], "0.4998");
+  EXPECT_EQ(result.runs[1].reused_from, 1);
+  const double mean =
+      (result.runs[0].measures[0] + result.runs[1].measures[0] + result.runs[2].measures[0]) / 3.0;
+  ASSERT_EQ(result.repeats, folder / "repeats.csv");
+  std::ifstream table(result.repeats);
+  std::string header, line;
+  std::getline(table, header);
+  std::getline(table, line);
+  EXPECT_EQ(header, "group,measure,runs,mean,sd,relative_sd,min,max");
+  std::stringstream fields(line);
+  std::string group, measure, runs, mean_text;
+  std::getline(fields, group, ',');
+  std::getline(fields, measure, ',');
+  std::getline(fields, runs, ',');
+  std::getline(fields, mean_text, ',');
+  EXPECT_EQ(group, "friction_angle=30");
+  EXPECT_EQ(runs, "3");
+  EXPECT_NEAR(std::stod(mean_text), mean, 1e-9 * std::abs(mean));
+  const SweepDefinition again = read_sweep_file(folder / "sweep.toml");
+  EXPECT_EQ(again.repeats, 3);
+  ASSERT_EQ(again.parameters.size(), 1u);
+  EXPECT_EQ(again.parameters[0].key, "material.sand.friction_angle");
+  nlohmann::json summary;
+  std::ifstream(folder / "sweep.json") >> summary;
+  EXPECT_EQ(summary["repeat_key"], "stage.release.courant");
+  EXPECT_EQ(summary["repeats"].size(), 1u);
+  fs::remove_all(folder);
+}
+
+// Sweeping the key the repeats change is refused before anything is written.
+TEST(Repeats, SweepingTheRepeatKeyIsRefused) {
+  const fs::path folder = fs::temp_directory_path() / "lituya_sweep_repeats_refused";
+  fs::remove_all(folder);
+  SweepDefinition d;
+  d.scene = fs::path(LITUYA_SWEEP_TEST_DATA) / "collapse.toml";
+  d.parameters = {{"stage.release.courant", {"0.4", "0.5"}}};
+  d.output = folder;
+  d.repeats = 2;
+  EXPECT_THROW(run_sweep(d, SweepOptions{}), lituya::InputError);
+  EXPECT_FALSE(fs::exists(folder));
+}
+
+}  // namespace
