@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "lituya/sweep/sweep.hpp"
+#include "run_record.hpp"
 
 namespace {
 
@@ -77,15 +78,7 @@ TEST(Richardson, RefusesRepeatedOrInvalidCellSizes) {
   EXPECT_THROW(richardson_estimate({0.005, 0.01, 0.02}, {1, NAN, 3}), std::invalid_argument);
 }
 
-RunRecord run(int number, std::vector<std::string> values, std::vector<double> measures,
-              RunStatus status = RunStatus::kOk) {
-  RunRecord r;
-  r.number = number;
-  r.values = std::move(values);
-  r.measures = std::move(measures);
-  r.status = status;
-  return r;
-}
+using lituya::sweep::testing::run;
 
 // A grid of a solver key and the cell size. For x = a: four sizes, the finest run failed (it is
 // left out) and m2 has no value at 0.01 m, so m1 takes 0.01 / 0.015 / 0.02 and m2 0.015 / 0.02 /

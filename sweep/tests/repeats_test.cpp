@@ -14,21 +14,14 @@
 #include "lituya/sweep/convergence.hpp"
 #include "lituya/sweep/definition.hpp"
 #include "lituya/sweep/sweep.hpp"
+#include "run_record.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace lituya::sweep;
 
-RunRecord run(int number, std::vector<std::string> values, std::vector<double> measures,
-              RunStatus status = RunStatus::kOk) {
-  RunRecord r;
-  r.number = number;
-  r.values = std::move(values);
-  r.measures = std::move(measures);
-  r.status = status;
-  return r;
-}
+using lituya::sweep::testing::run;
 
 // Repeat k changes the Courant number by 2e-4 k of itself: 0.5 -> 0.4999, 0.4998 (the runs of
 // verification/speed_accuracy_case_b's crossed-mesh scatter study).
