@@ -781,8 +781,8 @@ SweepResult run_sweep(const SweepDefinition& user_definition, const SweepOptions
     const std::string where = definition.source.empty() ? "--repeats" : definition.source.string();
     if (definition.repeats > kMaxRepeats)
       throw InputError(where, definition.repeats_line,
-                       "repeats must be 2 to " + std::to_string(kMaxRepeats) + " (got " +
-                           std::to_string(definition.repeats) + ")");
+                       "repeats must be 1 (no repeats) to " + std::to_string(kMaxRepeats) +
+                           " (got " + std::to_string(definition.repeats) + ")");
     SweepParameter repeat;
     repeat.key = repeat_key(scene.table(), scene.file());
     for (const SweepParameter& parameter : definition.parameters)
