@@ -318,7 +318,8 @@ bool write_plot(const SweepResult& result, const SweepDefinition& definition,
       series.push_back({result.table, x, column, "", true, 2, value, colour});
     }
   };
-  const int first_measure = 2 + static_cast<int>(keys);
+  // sweep.csv: run, every key (the repeat key too), then the measures.
+  const int first_measure = 2 + static_cast<int>(result.parameters.size());
   for (size_t m = 0; m < result.measures.size(); ++m)
     add(first_measure + static_cast<int>(m), result.measures[m]);
   std::string ylabel = "measure (m)";

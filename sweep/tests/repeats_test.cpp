@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include <toml++/toml.h>
@@ -150,6 +151,12 @@ TEST(Repeats, SweepRunsEachRunRepeatedAndSummarisesIt) {
   EXPECT_EQ(group, "friction_angle=30");
   EXPECT_EQ(runs, "3");
   EXPECT_NEAR(std::stod(mean_text), mean, 1e-9 * std::abs(mean));
+  // The plot draws the measure (column 4 of sweep.csv: run, friction_angle, courant, measure)
+  // against the swept key (column 2), not against the repeat key.
+  std::ifstream script(folder / "sweep.gp");
+  const std::string plot((std::istreambuf_iterator<char>(script)), {});
+  EXPECT_NE(plot.find("using 2:($4)"), std::string::npos) << plot;
+  EXPECT_EQ(plot.find("using 2:($3)"), std::string::npos) << plot;
   const SweepDefinition again = read_sweep_file(folder / "sweep.toml");
   EXPECT_EQ(again.repeats, 3);
   ASSERT_EQ(again.parameters.size(), 1u);
