@@ -32,7 +32,10 @@ std::vector<std::string> repeat_values(double courant, int repeats) {
   for (int k = 0; k < repeats; ++k) {
     char text[32];
     std::snprintf(text, sizeof text, "%.10g", courant * (1.0 - kRepeatCourantStep * k));
-    values.emplace_back(text);
+    std::string value = text;
+    // A TOML float, also where the value is whole ("1" -> "1.0").
+    if (value.find_first_of(".en") == std::string::npos) value += ".0";
+    values.push_back(value);
   }
   return values;
 }

@@ -824,7 +824,11 @@ SweepResult run_sweep(const SweepDefinition& user_definition, const SweepOptions
   std::vector<bool> numeric_parameter;
   for (const SweepParameter& parameter : definition.parameters) {
     targets.push_back(scene.locate(parameter.key));
-    literals.push_back(scene.literals(targets.back(), parameter.values));
+    // The repeat values are the sweep's own TOML floats: a scene's `courant = 1` (an integer)
+    // must not make them a type error the user cannot fix on the command line.
+    const bool repeat_key = definition.repeats > 1 && &parameter == &definition.parameters.back();
+    literals.push_back(repeat_key ? parameter.values
+                                  : scene.literals(targets.back(), parameter.values));
     numeric_parameter.push_back(numeric(targets.back(), literals.back()));
   }
   const PostContent post = post_content(scene.table());

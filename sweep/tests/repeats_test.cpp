@@ -29,6 +29,8 @@ using lituya::sweep::testing::run;
 TEST(Repeats, CourantNumbersStepBy2e4OfThemselves) {
   EXPECT_EQ(repeat_values(0.5, 3), (std::vector<std::string>{"0.5", "0.4999", "0.4998"}));
   EXPECT_EQ(repeat_values(0.9, 2), (std::vector<std::string>{"0.9", "0.89982"}));
+  // A whole Courant number stays a float, so a scene's integer `courant = 1` takes them.
+  EXPECT_EQ(repeat_values(1.0, 2), (std::vector<std::string>{"1.0", "0.9998"}));
 }
 
 // The key is the last stage's, by name (the stage the post reads in a scene of stages).

@@ -38,7 +38,7 @@ inline constexpr double kRepeatCourantStep = 2e-4;
 std::string repeat_key(const toml::table& scene, const std::filesystem::path& scene_file);
 
 // The values of the repeat key: courant (1 - kRepeatCourantStep k), k = 0 ... repeats - 1,
-// written with ten significant digits.
+// written with ten significant digits as TOML floats ("1.0", not "1").
 std::vector<std::string> repeat_values(double courant, int repeats);
 
 // Mean, standard deviation (n - 1 in the denominator; NaN for one value), smallest and largest
