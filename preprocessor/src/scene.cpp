@@ -12,6 +12,7 @@
 #include "lituya/post/postprocess.hpp"
 #include "lituya/pre/case_writer.hpp"
 #include "lituya/pre/seeding.hpp"
+#include "lituya/solver/mohr_coulomb.hpp"
 
 namespace lituya::pre {
 
@@ -245,10 +246,32 @@ void read_regions(const TomlTable& root, Scene& scene) {
   }
 }
 
+// A `contact` wall with `rough = "<soil>"`: its friction is the soil's own stress ratio on a
+// velocity discontinuity (solver::rough_wall_friction, Davis 1968), so a sweep of the soil's
+// angles carries the wall along. Written to the case as the number.
+void resolve_rough_wall(const TomlTable& t, const Scene& scene, solver::BoundaryCondition& b) {
+  if (b.rough.empty()) return;
+  const auto m = std::find_if(scene.materials.begin(), scene.materials.end(),
+                              [&](const solver::Material& x) { return x.name == b.rough; });
+  if (m == scene.materials.end()) {
+    std::string names;
+    for (const auto& x : scene.materials) names += (names.empty() ? "\"" : ", \"") + x.name + "\"";
+    t.fail("'rough' names no [[material]] \"" + b.rough + "\" (the scene has: " + names + ")",
+           "rough");
+  }
+  if (m->model != solver::MaterialModel::kMohrCoulomb)
+    t.fail("'rough' = \"" + b.rough +
+               "\" is not a mohr-coulomb soil: a rough wall takes its friction from the soil's "
+               "friction and dilatancy angles (give 'friction' instead)",
+           "rough");
+  b.friction = solver::rough_wall_friction(m->friction_angle, m->dilatancy_angle);
+}
+
 void read_boundaries_and_stages(const TomlTable& root, Scene& scene) {
   std::set<std::string> names;
   for (const TomlTable& t : root.tables("boundary")) {
     scene.boundaries.push_back(solver::read_boundary(t, scene.dimension));
+    resolve_rough_wall(t, scene, scene.boundaries.back());
     scene.boundary_group_lines.push_back(t.line_of("group"));
     if (!names.insert(scene.boundaries.back().name).second)
       t.fail("two [[boundary]] entries are named '" + scene.boundaries.back().name +

@@ -3,6 +3,8 @@
 #include "lituya/pre/scene.hpp"
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 #include <gtest/gtest.h>
 
@@ -178,6 +180,55 @@ TEST_F(BadScene, CrossedCellsAre2DOnly) {
   const auto scene = replaced(replaced(kScene, "dimension = 2", "dimension = 3"),
                               "points_per_cell = 4", "points_per_cell = 4\ncrossed = true");
   expect_error(scene, "scene.toml", line_of(scene, "crossed"), {"crossed", "2D only"});
+}
+
+// A rough wall takes the friction of its soil, sin(phi) cos(psi) / (1 - sin(phi) sin(psi))
+// (Davis 1968): 0.5 for phi = 30, psi = 0; and it is written to the case as that number.
+TEST_F(BadScene, RoughWallTakesTheSoilsFriction) {
+  const auto scene = replaced(kScene, "type = \"fixed\"", "type = \"contact\"\nrough = \"sand\"");
+  testing::write_text(folder_ / "scene.toml", scene);
+  const Scene read = read_scene(folder_ / "scene.toml");
+  ASSERT_EQ(read.boundaries.size(), 1u);
+  EXPECT_NEAR(read.boundaries[0].friction, 0.5, 1e-15);
+  // With dilatancy psi = 10 deg: 0.5 cos 10 / (1 - 0.5 sin 10) = 0.5392213...
+  const auto dilating = replaced(scene, "friction_angle = 30.0",
+                                 "friction_angle = 30.0\n"
+                                 "dilatancy_angle = 10.0");
+  testing::write_text(folder_ / "scene.toml", dilating);
+  EXPECT_NEAR(read_scene(folder_ / "scene.toml").boundaries[0].friction, 0.5392213, 1e-7);
+  testing::write_text(folder_ / "scene.toml", scene);
+  preprocess(folder_ / "scene.toml", folder_ / "case", false);
+  std::ifstream stages(folder_ / "case" / "stages.toml");
+  const std::string text{std::istreambuf_iterator<char>(stages), {}};
+  const std::size_t at = text.find("friction = ");
+  ASSERT_NE(at, std::string::npos) << text;
+  EXPECT_NEAR(std::stod(text.substr(at + 11)), 0.5, 1e-15) << text;
+  EXPECT_EQ(text.find("rough"), std::string::npos) << text;
+}
+
+TEST_F(BadScene, RoughWallNamesAnUnknownMaterial) {
+  const auto scene = replaced(kScene, "type = \"fixed\"", "type = \"contact\"\nrough = \"snad\"");
+  expect_error(scene, "scene.toml", line_of(scene, "rough"), {"'rough'", "\"snad\"", "\"sand\""});
+}
+
+TEST_F(BadScene, RoughWallAndFrictionBoth) {
+  const auto scene =
+      replaced(kScene, "type = \"fixed\"", "type = \"contact\"\nfriction = 0.3\nrough = \"sand\"");
+  expect_error(scene, "scene.toml", line_of(scene, "rough"), {"either 'friction'", "not both"});
+}
+
+TEST_F(BadScene, RoughOnlyOnAContactWall) {
+  const auto scene = replaced(kScene, "type = \"fixed\"", "type = \"fixed\"\nrough = \"sand\"");
+  expect_error(scene, "scene.toml", line_of(scene, "rough"),
+               {"'rough' applies only to type = \"contact\""});
+}
+
+TEST_F(BadScene, RoughWallOfAnElasticMaterial) {
+  const auto scene =
+      replaced(replaced(replaced(kScene, "model = \"mohr-coulomb\"", "model = \"linear-elastic\""),
+                        "friction_angle = 30.0\n", ""),
+               "type = \"fixed\"", "type = \"contact\"\nrough = \"sand\"");
+  expect_error(scene, "scene.toml", line_of(scene, "rough"), {"not a mohr-coulomb soil"});
 }
 
 TEST_F(BadScene, StageUsesAnUnknownBoundary) {

@@ -121,10 +121,18 @@ BoundaryCondition read_boundary(const TomlTable& t, int dimension) {
               : phase == "solid" ? BoundaryPhase::kSolid
                                  : BoundaryPhase::kLiquid;
   }
-  if (b.type == BoundaryType::kContact)
+  if (b.type == BoundaryType::kContact) {
+    if (t.has("rough") && t.has("friction"))
+      t.fail(
+          "give either 'friction' (a Coulomb coefficient) or 'rough' (the soil whose strength "
+          "sets it), not both",
+          "rough");
     b.friction = t.number_in_or("friction", 0.0, 10.0, 0.0);
-  else if (t.has("friction"))
-    t.fail("'friction' applies only to type = \"contact\"", "friction");
+    b.rough = t.string_or("rough", "");
+  } else {
+    for (const char* k : {"friction", "rough"})
+      if (t.has(k)) t.fail(std::string("'") + k + "' applies only to type = \"contact\"", k);
+  }
   if (b.type == BoundaryType::kFixity) {
     for (const std::string& d : t.strings("directions")) {
       int axis = d == "x" ? 0 : d == "y" ? 1 : d == "z" ? 2 : -1;
@@ -503,6 +511,10 @@ CaseDescription read_case(const std::string& case_folder) {
   if (auto o = root.optional_table("output")) c.output = read_output_settings(*o);
   for (const TomlTable& b : root.tables("boundary")) {
     c.boundaries.push_back(read_boundary(b, c.dimension));
+    // `rough` names a material of the scene; pre resolves it to the number.
+    if (!c.boundaries.back().rough.empty())
+      b.fail("'rough' belongs in scene.toml: lituya pre writes the wall's 'friction' here",
+             "rough");
     bool found = false;
     for (const auto& g : c.groups)
       found = found || (g.name == c.boundaries.back().group && g.dimension == c.dimension - 1);

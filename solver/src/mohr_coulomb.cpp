@@ -91,6 +91,14 @@ double dot3(const double a[3], const double b[3]) {
 }
 }  // namespace
 
+double rough_wall_friction(double friction_angle_deg, double dilatancy_angle_deg) {
+  const double deg = std::numbers::pi / 180;
+  const double sin_phi = std::sin(friction_angle_deg * deg);
+  const double sin_psi = std::sin(dilatancy_angle_deg * deg);
+  const double cos_psi = std::cos(dilatancy_angle_deg * deg);
+  return sin_phi * cos_psi / (1.0 - sin_phi * sin_psi);
+}
+
 ElasticConstants ElasticConstants::from_young_poisson(double youngs_modulus, double poisson_ratio) {
   if (!(youngs_modulus > 0) || !(poisson_ratio > -1 && poisson_ratio < 0.5)) {
     throw std::invalid_argument(

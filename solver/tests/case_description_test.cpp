@@ -396,4 +396,26 @@ TEST(CaseDescription, HandEditedCaseRefusesUnsafeNamesAndNonFiniteGravity) {
   std::filesystem::remove_all(folder);
 }
 
+// A rough wall names a material of the scene; pre resolves it to the number. A hand-edited
+// stages.toml that keeps `rough` would otherwise run with friction 0.
+TEST(CaseDescription, RoughWallIsResolvedByThePreprocessor) {
+  const auto folder = std::filesystem::temp_directory_path() / "lituya_rough_in_case";
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder / "stages.toml")
+      << "format = \"lituya-stages\"\nversion = 1\ndimension = 2\ngravity = [0.0, -9.81]\n"
+         "geometry = \"geometry.vtu\"\npoints = \"points.vtu\"\nmaterials = \"materials.toml\"\n"
+         "\n[[group]]\nname = \"bed\"\ndimension = 1\n"
+         "\n[[boundary]]\ngroup = \"bed\"\ntype = \"contact\"\nrough = \"sand\"\n"  // line 16
+         "\n[[stage]]\nname = \"go\"\ntype = \"dynamic\"\nduration = 1.0\n";
+  std::string msg = "accepted";
+  try {
+    read_case(folder.string());
+  } catch (const lituya::InputError& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("stages.toml:16:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("belongs in scene.toml"), std::string::npos) << msg;
+  std::filesystem::remove_all(folder);
+}
+
 }  // namespace

@@ -502,11 +502,16 @@ TEST(MohrCoulomb, SimpleShearUnderConstantNormalStressReachesDavis) {
     }
     EXPECT_NEAR(s[3] / -s[1], davis_ratio(phi, psi), 1e-4 * davis_ratio(phi, psi))
         << "phi " << phi << " psi " << psi;
+    // The friction of a `contact` wall with `rough = <soil>` is this ultimate ratio.
+    EXPECT_NEAR(lituya::solver::rough_wall_friction(phi, psi), s[3] / -s[1],
+                1e-4 * davis_ratio(phi, psi));
     EXPECT_NEAR(s[1], sn, 1e-6 * kPa);
     EXPECT_EQ(s[4], 0.0);
     EXPECT_EQ(s[5], 0.0);
   }
   EXPECT_NEAR(davis_ratio(30, 0), 0.5, 1e-15);
+  EXPECT_NEAR(lituya::solver::rough_wall_friction(30, 30), std::tan(30 * kDeg), 1e-15);
+  EXPECT_NEAR(lituya::solver::rough_wall_friction(15, 0), std::sin(15 * kDeg), 1e-15);
 }
 
 TEST(MohrCoulomb, TriaxialCompressionPeakDeviator) {

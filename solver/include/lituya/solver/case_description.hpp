@@ -55,7 +55,11 @@ struct BoundaryCondition {
   std::string name;
   std::string group;
   BoundaryType type = BoundaryType::kFixed;
-  double friction = 0;           // contact only
+  double friction = 0;  // contact only
+  // contact only: the soil material whose rough_wall_friction (mohr_coulomb.hpp) sets
+  // `friction`; resolved by the scene reader, which knows the materials. Empty: `friction`
+  // as given.
+  std::string rough;
   std::vector<int> directions;   // fixity only: 0 = x, 1 = y, 2 = z
   std::vector<double> traction;  // traction only: Pa, `dimension` components
   double ramp_time = 0;          // traction only: s, linear rise from 0 at the stage start

@@ -23,6 +23,15 @@ struct ElasticConstants {
 void elastic_update(const ElasticConstants& elastic, Voigt6& stress,
                     const Voigt6& strain_increment);
 
+// The friction coefficient of a rough rigid wall under a Mohr-Coulomb soil: the stress ratio
+// tau / sigma'_n on a plane of velocity discontinuity in a soil sheared at its strength,
+// tan(phi*) = sin(phi) cos(psi) / (1 - sin(phi) sin(psi)) (Davis 1968): sin(phi) for psi = 0,
+// tan(phi) for associated flow (psi = phi). A no-slip wall tends to it as the cells shrink
+// (user manual 2.4); a `contact` wall with `rough = "<soil>"` uses it directly. Angles in
+// degrees. The soil's cohesion has a share c cos(phi) cos(psi) / (1 - sin(phi) sin(psi)) on
+// that plane, which a Coulomb wall does not carry.
+double rough_wall_friction(double friction_angle_deg, double dilatancy_angle_deg);
+
 class MohrCoulomb {
  public:
   // Angles in degrees; cohesion and tensile strength in Pa.
