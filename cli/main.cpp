@@ -601,10 +601,8 @@ int run_sweep(const Options& o, std::ostream& errors) {
   }
   if (!o.output.empty()) definition.output = o.output;
   if (o.repeats != 0) {
-    if (o.repeats < 1 || o.repeats > lituya::sweep::kMaxRepeats)
-      throw UsageError("sweep", "--repeats must be 1 (no repeats) to " +
-                                    std::to_string(lituya::sweep::kMaxRepeats) + " (got " +
-                                    std::to_string(o.repeats) + ")");
+    const std::string range = lituya::sweep::repeats_range_error(o.repeats);
+    if (!range.empty()) throw UsageError("sweep", "--repeats " + range);
     definition.repeats = o.repeats;
     definition.repeats_line = 0;
   }

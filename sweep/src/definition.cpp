@@ -251,8 +251,8 @@ SweepDefinition read_sweep_file(const fs::path& file) {
   if (root.has("repeats")) {
     d.repeats_line = root.line_of("repeats");
     d.repeats = static_cast<int>(root.integer_or("repeats", 1));
-    if (d.repeats < 1 || d.repeats > kMaxRepeats)
-      root.fail("'repeats' must be 1 (no repeats) to " + std::to_string(kMaxRepeats), "repeats");
+    const std::string range = repeats_range_error(d.repeats);
+    if (!range.empty()) root.fail("'repeats' " + range, "repeats");
   }
   root.finish();
   combinations(d);  // zip lengths, repeated keys and the number of runs, at their lines

@@ -16,6 +16,12 @@
 
 namespace lituya::sweep {
 
+std::string repeats_range_error(int repeats) {
+  if (repeats >= 1 && repeats <= kMaxRepeats) return "";
+  return "must be 1 (no repeats) to " + std::to_string(kMaxRepeats) + " (got " +
+         std::to_string(repeats) + ")";
+}
+
 std::string repeat_key(const toml::table& scene, const std::filesystem::path& scene_file) {
   const toml::array* stages = scene["stage"].as_array();
   if (!stages || stages->empty() || !stages->back().is_table())

@@ -706,6 +706,50 @@ std::string process_end(int status) {
   return "the run's process ended with exit code " + std::to_string(WEXITSTATUS(status));
 }
 
+// Repeats (repeats.hpp): appends the repeat key, stage.<last>.courant with the values of
+// repeat_values, to `definition` and makes each combination `definition.repeats` runs, the
+// repeat varying fastest. Input errors name the sweep file (or --repeats) or the scene.
+void add_repeat_key(const SceneText& scene, SweepDefinition& definition,
+                    std::vector<std::vector<size_t>>& combos) {
+  const std::string where = definition.source.empty() ? "--repeats" : definition.source.string();
+  const std::string range = repeats_range_error(definition.repeats);
+  if (!range.empty()) throw InputError(where, definition.repeats_line, "repeats " + range);
+  SweepParameter repeat;
+  repeat.key = repeat_key(scene.table(), scene.file());
+  for (const SweepParameter& parameter : definition.parameters)
+    if (parameter.key == repeat.key)
+      throw InputError(where, parameter.line,
+                       "'" + repeat.key +
+                           "' is the key that repeats change (by 2e-4 of itself per repeat); "
+                           "sweep it or repeat the runs, not both");
+  const KeyTarget target = scene.locate(repeat.key);
+  double courant = solver::Stage{}.courant;
+  if (target.present) {
+    try {
+      courant = std::stod(target.current);
+    } catch (const std::exception&) {
+      throw InputError(
+          scene.file().string(), target.line,
+          "'" + repeat.key + "' must be a number for --repeats (got " + target.current + ")");
+    }
+  }
+  repeat.values = repeat_values(courant, definition.repeats);
+  definition.parameters.push_back(repeat);
+  std::vector<std::vector<size_t>> repeated;
+  for (const std::vector<size_t>& combo : combos)
+    for (int k = 0; k < definition.repeats; ++k) {
+      repeated.push_back(combo);
+      repeated.back().push_back(static_cast<size_t>(k));
+    }
+  if (repeated.size() > kMaxRuns)
+    throw InputError(where, definition.repeats_line,
+                     std::to_string(combos.size()) + " runs x " +
+                         std::to_string(definition.repeats) +
+                         " repeats = " + std::to_string(repeated.size()) + " runs, more than " +
+                         std::to_string(kMaxRuns));
+  combos = std::move(repeated);
+}
+
 }  // namespace
 
 std::string status_text(RunStatus status) {
@@ -778,47 +822,7 @@ SweepResult run_sweep(const SweepDefinition& user_definition, const SweepOptions
   std::vector<std::vector<size_t>> combos = combinations(user_definition);
   // With repeats, the sweep's keys gain the repeat key (repeats.hpp), varying fastest.
   SweepDefinition definition = user_definition;
-  if (definition.repeats > 1) {
-    const std::string where = definition.source.empty() ? "--repeats" : definition.source.string();
-    if (definition.repeats > kMaxRepeats)
-      throw InputError(where, definition.repeats_line,
-                       "repeats must be 1 (no repeats) to " + std::to_string(kMaxRepeats) +
-                           " (got " + std::to_string(definition.repeats) + ")");
-    SweepParameter repeat;
-    repeat.key = repeat_key(scene.table(), scene.file());
-    for (const SweepParameter& parameter : definition.parameters)
-      if (parameter.key == repeat.key)
-        throw InputError(where, parameter.line,
-                         "'" + repeat.key +
-                             "' is the key that repeats change (by 2e-4 of itself per repeat); "
-                             "sweep it or repeat the runs, not both");
-    const KeyTarget target = scene.locate(repeat.key);
-    double courant = solver::Stage{}.courant;
-    if (target.present) {
-      try {
-        courant = std::stod(target.current);
-      } catch (const std::exception&) {
-        throw InputError(
-            scene.file().string(), target.line,
-            "'" + repeat.key + "' must be a number for --repeats (got " + target.current + ")");
-      }
-    }
-    repeat.values = repeat_values(courant, definition.repeats);
-    definition.parameters.push_back(repeat);
-    std::vector<std::vector<size_t>> repeated;
-    for (const std::vector<size_t>& combo : combos)
-      for (int k = 0; k < definition.repeats; ++k) {
-        repeated.push_back(combo);
-        repeated.back().push_back(static_cast<size_t>(k));
-      }
-    if (repeated.size() > kMaxRuns)
-      throw InputError(where, definition.repeats_line,
-                       std::to_string(combos.size()) + " runs x " +
-                           std::to_string(definition.repeats) +
-                           " repeats = " + std::to_string(repeated.size()) + " runs, more than " +
-                           std::to_string(kMaxRuns));
-    combos = std::move(repeated);
-  }
+  if (definition.repeats > 1) add_repeat_key(scene, definition, combos);
   std::vector<KeyTarget> targets;
   std::vector<std::vector<std::string>> literals;
   std::vector<bool> numeric_parameter;

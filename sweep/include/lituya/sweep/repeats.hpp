@@ -30,6 +30,9 @@ namespace lituya::sweep {
 struct SweepResult;
 
 inline constexpr int kMaxRepeats = 20;
+// Empty when 1 <= repeats <= kMaxRepeats; else "must be 1 (no repeats) to 20 (got N)", for the
+// command line's, the sweep file's and run_sweep's messages alike.
+std::string repeats_range_error(int repeats);
 // The relative change of the Courant number from one repeat to the next.
 inline constexpr double kRepeatCourantStep = 2e-4;
 
