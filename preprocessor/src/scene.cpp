@@ -254,9 +254,10 @@ void resolve_rough_wall(const TomlTable& t, const Scene& scene, solver::Boundary
   const auto m = std::find_if(scene.materials.begin(), scene.materials.end(),
                               [&](const solver::Material& x) { return x.name == b.rough; });
   if (m == scene.materials.end()) {
-    std::string names;
-    for (const auto& x : scene.materials) names += (names.empty() ? "\"" : ", \"") + x.name + "\"";
-    t.fail("'rough' names no [[material]] \"" + b.rough + "\" (the scene has: " + names + ")",
+    std::vector<std::string> names;
+    for (const auto& x : scene.materials) names.push_back(x.name);
+    t.fail("'rough' names no [[material]] \"" + b.rough +
+               "\" (the scene has: " + quoted_list(names) + ")",
            "rough");
   }
   if (m->model != solver::MaterialModel::kMohrCoulomb)
