@@ -7,6 +7,7 @@
 #include <set>
 
 #include "lituya/common/input_error.hpp"
+#include "lituya/common/quoted_list.hpp"
 #include "lituya/common/safe_name.hpp"
 #include "lituya/common/toml_reader.hpp"
 #include "lituya/post/postprocess.hpp"
@@ -21,15 +22,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string quoted_list(const std::vector<std::string>& names) {
-  std::string list;
-  for (const auto& n : names) {
-    if (!list.empty()) list += ", ";
-    list += "\"" + n + "\"";
-  }
-  return list;
-}
 
 void read_mesh_table(const TomlTable& root, const fs::path& scene_file, Scene& scene) {
   const TomlTable mesh = root.table("mesh");

@@ -9,6 +9,7 @@
 
 #include "lituya/common/csv_writer.hpp"
 #include "lituya/common/input_error.hpp"
+#include "lituya/common/quoted_list.hpp"
 #include "lituya/post/postprocess.hpp"
 
 namespace lituya::sweep {
@@ -51,12 +52,6 @@ std::string trim(const std::string& s, const char* blanks = " \t\r") {
   const size_t b = s.find_first_not_of(blanks);
   if (b == std::string::npos) return "";
   return s.substr(b, s.find_last_not_of(blanks) - b + 1);
-}
-
-std::string quoted_list(const std::vector<std::string>& items) {
-  std::string list;
-  for (const std::string& item : items) list += (list.empty() ? "\"" : ", \"") + item + "\"";
-  return list;
 }
 
 std::vector<std::string> split(const std::string& line) {

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "lituya/common/input_error.hpp"
+#include "lituya/common/quoted_list.hpp"
 
 namespace lituya::sweep {
 
@@ -30,12 +31,6 @@ std::string trim(const std::string& s) {
   const size_t b = s.find_first_not_of(" \t");
   if (b == std::string::npos) return "";
   return s.substr(b, s.find_last_not_of(" \t") - b + 1);
-}
-
-std::string quoted_list(const std::vector<std::string>& items) {
-  std::string list;
-  for (const std::string& item : items) list += (list.empty() ? "\"" : ", \"") + item + "\"";
-  return list.empty() ? "nothing" : list;
 }
 
 std::vector<std::string> keys_of(const toml::table& table) {

@@ -21,6 +21,7 @@
 
 #include "lituya/common/atomic_file.hpp"
 #include "lituya/common/csv_writer.hpp"
+#include "lituya/common/quoted_list.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/json_file.hpp"
 #include "lituya/common/output_folder.hpp"
@@ -134,12 +135,6 @@ std::vector<std::string> check_copies(const std::vector<std::string>& copies,
   std::error_code ignore;
   fs::remove(scratch, ignore);
   return messages;
-}
-
-std::string quoted_list(const std::vector<std::string>& items) {
-  std::string list;
-  for (const std::string& item : items) list += (list.empty() ? "\"" : ", \"") + item + "\"";
-  return list.empty() ? "nothing" : list;
 }
 
 std::string run_message(const RunRecord& run) {
