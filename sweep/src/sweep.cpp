@@ -21,11 +21,11 @@
 
 #include "lituya/common/atomic_file.hpp"
 #include "lituya/common/csv_writer.hpp"
-#include "lituya/common/quoted_list.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/json_file.hpp"
 #include "lituya/common/output_folder.hpp"
 #include "lituya/common/provenance.hpp"
+#include "lituya/common/quoted_list.hpp"
 #include "lituya/common/stop_request.hpp"
 #include "lituya/post/plot.hpp"
 #include "lituya/post/postprocess.hpp"
