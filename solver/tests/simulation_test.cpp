@@ -240,6 +240,46 @@ TEST(Simulation, DilatedPointPushesLikeADensePointOfTheSameMass) {
   EXPECT_LT(difference, 1e-12 * largest);
 }
 
+// The maximum porosity of section 2.3 of the paper (scientific manual 10.6): a point whose
+// porosity n = 1 - m / (rho_s V) has reached n_max holds grains that no longer touch, so it
+// carries no effective stress whatever its strain; below n_max the constitutive update acts as
+// without the switch. The same compressive step as above on a block of n0 = 0.5 with
+// n_max = 0.6, its points dilated 1.5-fold (n = 0.67) or 1.1-fold (n = 0.55).
+TEST(Simulation, PointLooserThanItsMaximumPorosityCarriesNoEffectiveStress) {
+  auto force_carrying_stress = [](double dilation, double max_porosity) {
+    BoxScene<2> scene;
+    scene.domain_size = {1.0, 1.0};
+    scene.cells = {10, 10};
+    scene.block_min = {0.2, 0.2};
+    scene.block_max = {0.8, 0.8};
+    scene.material = elastic_material(1500.0, 2.0e7, 0.3);
+    scene.material.max_porosity = max_porosity;
+    scene.gravity = {0.0, 0.0};
+    auto sim = make_box_simulation<2>(scene);
+    MaterialPoints<2>& points = sim.points();
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      points.volume[p] *= dilation;
+      points.velocity[p] = Eigen::Vector2d(-0.5 * (points.position[p](0) - 0.5), 0.0);
+    }
+    sim.step(1e-4, 0.0);
+    std::vector<double> v_sigma_xx;
+    for (std::size_t p = 0; p < points.size(); ++p)
+      v_sigma_xx.push_back(points.volume[p] * points.stress[p](0));
+    return v_sigma_xx;
+  };
+  auto largest = [](const std::vector<double>& values) {
+    double m = 0;
+    for (double v : values) m = std::max(m, std::abs(v));
+    return m;
+  };
+  // Looser than n_max: no stress at all; without the switch the same step does load it.
+  EXPECT_EQ(largest(force_carrying_stress(1.5, 0.6)), 0.0);
+  const std::vector<double> unswitched = force_carrying_stress(1.5, 1.0);
+  ASSERT_GT(largest(unswitched), 0.0);
+  // Denser than n_max: the stress of the same point without the switch, to the last bit.
+  EXPECT_EQ(force_carrying_stress(1.1, 0.6), force_carrying_stress(1.1, 1.0));
+}
+
 TEST(Simulation, TwoThreadsGiveTheSameAnswerAsOne) {
   auto run = [](int threads) {
     BoxScene<2> scene = sand_column(25, 0.4);
