@@ -201,6 +201,32 @@ TEST(Simulation, CohesionlessSandCollapsesFromZeroStress) {
   EXPECT_GT(front, 0.3);  // it ran out well beyond the initial 0.2 m
 }
 
+// One compressive step (v_x = -0.5 (x - 0.5), no gravity) of an elastic block of n0 = 0.5
+// whose points were dilated by `dilation`: each point's V sigma_xx, the stress that its nodal
+// force carries.
+std::vector<double> force_carrying_stress_after_a_compression(double dilation,
+                                                              double max_porosity = 1.0) {
+  BoxScene<2> scene;
+  scene.domain_size = {1.0, 1.0};
+  scene.cells = {10, 10};
+  scene.block_min = {0.2, 0.2};
+  scene.block_max = {0.8, 0.8};
+  scene.material = elastic_material(1500.0, 2.0e7, 0.3);
+  scene.material.max_porosity = max_porosity;
+  scene.gravity = {0.0, 0.0};
+  auto sim = make_box_simulation<2>(scene);
+  MaterialPoints<2>& points = sim.points();
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    points.volume[p] *= dilation;
+    points.velocity[p] = Eigen::Vector2d(-0.5 * (points.position[p](0) - 0.5), 0.0);
+  }
+  sim.step(1e-4, 0.0);
+  std::vector<double> v_sigma_xx;
+  for (std::size_t p = 0; p < points.size(); ++p)
+    v_sigma_xx.push_back(points.volume[p] * points.stress[p](0));
+  return v_sigma_xx;
+}
+
 // The stress update acts on the Kirchhoff stress J sigma (simulation.cpp): a point dilated to
 // ten times its volume at the dry density (grains parted at a thin front) and compressed again
 // pushes on its nodes with V sigma = V_0 tau, the force a dense point of the same mass would
@@ -208,27 +234,8 @@ TEST(Simulation, CohesionlessSandCollapsesFromZeroStress) {
 // the Cauchy stress it pushed ten times harder, and a nearly empty node threw the points
 // sharing it (issue 8: a dry column blew up at its front at any Courant number).
 TEST(Simulation, DilatedPointPushesLikeADensePointOfTheSameMass) {
-  auto force_carrying_stress = [](double dilation) {
-    BoxScene<2> scene;
-    scene.domain_size = {1.0, 1.0};
-    scene.cells = {10, 10};
-    scene.block_min = {0.2, 0.2};
-    scene.block_max = {0.8, 0.8};
-    scene.material = elastic_material(1500.0, 2.0e7, 0.3);
-    scene.gravity = {0.0, 0.0};
-    auto sim = make_box_simulation<2>(scene);
-    MaterialPoints<2>& points = sim.points();
-    for (std::size_t p = 0; p < points.size(); ++p) {
-      points.volume[p] *= dilation;
-      points.velocity[p] = Eigen::Vector2d(-0.5 * (points.position[p](0) - 0.5), 0.0);
-    }
-    sim.step(1e-4, 0.0);
-    std::vector<double> v_sigma_xx;
-    for (std::size_t p = 0; p < points.size(); ++p)
-      v_sigma_xx.push_back(points.volume[p] * points.stress[p](0));
-    return v_sigma_xx;
-  };
-  const auto dense = force_carrying_stress(1.0), dilated = force_carrying_stress(10.0);
+  const auto dense = force_carrying_stress_after_a_compression(1.0),
+             dilated = force_carrying_stress_after_a_compression(10.0);
   ASSERT_EQ(dense.size(), dilated.size());
   double largest = 0, difference = 0;
   for (std::size_t p = 0; p < dense.size(); ++p) {
@@ -246,27 +253,7 @@ TEST(Simulation, DilatedPointPushesLikeADensePointOfTheSameMass) {
 // without the switch. The same compressive step as above on a block of n0 = 0.5 with
 // n_max = 0.6, its points dilated 1.5-fold (n = 0.67) or 1.1-fold (n = 0.55).
 TEST(Simulation, PointLooserThanItsMaximumPorosityCarriesNoEffectiveStress) {
-  auto force_carrying_stress = [](double dilation, double max_porosity) {
-    BoxScene<2> scene;
-    scene.domain_size = {1.0, 1.0};
-    scene.cells = {10, 10};
-    scene.block_min = {0.2, 0.2};
-    scene.block_max = {0.8, 0.8};
-    scene.material = elastic_material(1500.0, 2.0e7, 0.3);
-    scene.material.max_porosity = max_porosity;
-    scene.gravity = {0.0, 0.0};
-    auto sim = make_box_simulation<2>(scene);
-    MaterialPoints<2>& points = sim.points();
-    for (std::size_t p = 0; p < points.size(); ++p) {
-      points.volume[p] *= dilation;
-      points.velocity[p] = Eigen::Vector2d(-0.5 * (points.position[p](0) - 0.5), 0.0);
-    }
-    sim.step(1e-4, 0.0);
-    std::vector<double> v_sigma_xx;
-    for (std::size_t p = 0; p < points.size(); ++p)
-      v_sigma_xx.push_back(points.volume[p] * points.stress[p](0));
-    return v_sigma_xx;
-  };
+  const auto force_carrying_stress = force_carrying_stress_after_a_compression;
   auto largest = [](const std::vector<double>& values) {
     double m = 0;
     for (double v : values) m = std::max(m, std::abs(v));
