@@ -176,8 +176,8 @@ void read_soil_region(const TomlTable& t, const Scene& scene, Region& r) {
   while (index < scene.materials.size() && scene.materials[index].name != name) ++index;
   if (index == scene.materials.size())
     t.fail("region '" + r.group + "' is saturated with '" + name +
-               "', which no [[material]] defines (water materials: " +
-               (water_names.empty() ? std::string("none") : quoted_list(water_names)) + ")",
+               "', which no [[material]] defines (water materials: " + quoted_list(water_names) +
+               ")",
            "water");
   const solver::Material& water = scene.materials[index];
   if (!water.is_liquid())
