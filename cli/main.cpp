@@ -79,7 +79,8 @@ repeat --parameter KEY --values ... per key; --combine grid (default) runs every
 combination, --combine zip the i-th values of every key together. Measures:
 gauge_first_crest[:GAUGE], gauge_first_wave_area[:GAUGE], gauge_max[:GAUGE],
 leading_wave_max, front_travel_final, front_travel_max, mass_front_travel_final,
-wall_height_final, wall_height_max, kinetic_energy_solid_max, kinetic_energy_liquid_max
+wall_height_final, wall_height_max, kinetic_energy_solid_max, kinetic_energy_liquid_max,
+speed_solid_max, speed_liquid_max
 (default: gauge_first_crest at every gauge, else front_travel_final). DIR defaults to
 sweep_<KEY> next to the scene (several keys joined by '+'; for a sweep file: its name
 without .toml). --dry-run checks every scene copy and measure and lists the runs without

@@ -46,6 +46,8 @@ constexpr Kind kKinds[] = {
      "J, per m in 2D"},
     {"kinetic_energy_liquid_max", nullptr, "kinetic_energy_liquid", Reduction::kMax, Kind::kHistory,
      "J, per m in 2D"},
+    {"speed_solid_max", nullptr, "max_speed_solid", Reduction::kMax, Kind::kHistory, "m/s"},
+    {"speed_liquid_max", nullptr, "max_speed_liquid", Reduction::kMax, Kind::kHistory, "m/s"},
 };
 
 std::string trim(const std::string& s, const char* blanks = " \t\r") {

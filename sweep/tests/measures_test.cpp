@@ -130,6 +130,14 @@ TEST(Measures, KineticEnergyFromTheStageHistory) {
   EXPECT_DOUBLE_EQ(take_measure(measures[1], post), 0.75);
   EXPECT_EQ(measure_unit(measures[0].name), "J, per m in 2D");
 
+  // The fastest point of each phase: the largest max_speed_* over the rows (the solid's 0.9 m/s
+  // at 0.3 s, not its last row's 0.6).
+  const std::vector<Measure> speeds =
+      parse_measures({"speed_solid_max", "speed_liquid_max"}, without_post, "scene.toml");
+  EXPECT_DOUBLE_EQ(take_measure(speeds[0], post), 0.9);
+  EXPECT_DOUBLE_EQ(take_measure(speeds[1], post), 0.5);
+  EXPECT_EQ(measure_unit(speeds[0].name), "m/s");
+
   // [post] stage wins over the last stage; a missing history names the file.
   const PostContent gravity = post_content(toml::parse(
       "[[stage]]\nname = 'gravity'\n[[stage]]\nname = 'release'\n[post]\nstage = 'gravity'\n"));

@@ -20,11 +20,16 @@
 //                              `lituya post` reads, or without [post] the scene's last;
 //                              needs no [post] key
 //   kinetic_energy_liquid_max  the same for the liquid points
+//   speed_solid_max            highest speed of any solid point, m/s, from the same history
+//                              (about a thousand rows per stage): a point thrown faster than
+//                              the flow can move it shows here, where a runout may not
+//   speed_liquid_max           the same for the liquid points
 //
 // A gauge measure without :GAUGE stands for one measure per gauge of the scene. All measures
-// but gauge_first_wave_area and the kinetic energies are lengths in m. A measure without a value
-// (no water ever reached the gauge, no crest, a blank last row) is NaN, a blank cell in sweep.csv.
-// The kinetic energies are in J (per metre of width in 2D).
+// but gauge_first_wave_area, the kinetic energies and the speeds are lengths in m. A measure
+// without a value (no water ever reached the gauge, no crest, a blank last row) is NaN, a blank
+// cell in sweep.csv.
+// The kinetic energies are in J (per metre of width in 2D), the speeds in m/s.
 #include <cmath>
 #include <filesystem>
 #include <string>
