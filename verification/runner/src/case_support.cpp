@@ -7,6 +7,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -17,6 +18,7 @@
 #include "lituya/post/postprocess.hpp"
 #include "lituya/pre/preprocess.hpp"
 #include "lituya/solver/solve.hpp"
+#include "lituya/sweep/measures.hpp"
 
 namespace lituya::verify {
 
@@ -53,6 +55,15 @@ std::filesystem::path run_scene(const CaseContext& context) {
   return run_scene(context,
                    context.source / (context.full ? "scene_full.toml" : "scene_quick.toml"),
                    context.work / "case");
+}
+
+double largest_in_history(const std::filesystem::path& case_folder, const std::string& stage,
+                          const std::string& column) {
+  const auto file = (case_folder / "output" / (stage + "_history.csv")).string();
+  double largest = 0;  // blank cells read as NaN, which std::max passes over
+  for (double value : sweep::read_csv(file, true).column(column, file))
+    largest = std::max(largest, value);
+  return largest;
 }
 
 std::vector<Frame> read_series(const std::filesystem::path& case_folder, const std::string& stage,

@@ -75,6 +75,11 @@ struct Frame {
 // `kind` is "points" (solid points), "liquid" (water points) or "grid".
 std::vector<Frame> read_series(const std::filesystem::path& case_folder, const std::string& stage,
                                const std::string& kind = "points");
+// The largest value of `column` in the solver's history of `stage`
+// (<case>/output/<stage>_history.csv, about a thousand rows a stage): for example the fastest
+// solid point, "max_speed_solid", which the outputs tens of milliseconds apart can miss.
+double largest_in_history(const std::filesystem::path& case_folder, const std::string& stage,
+                          const std::string& column);
 // A point data array of a .vtu (tuples flattened) and its number of components.
 std::vector<double> read_point_array(const std::filesystem::path& vtu, const std::string& name,
                                      int& components);

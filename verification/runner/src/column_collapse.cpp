@@ -5,7 +5,6 @@
 // converges with the cell size; the runout is also compared with 2D laboratory collapses.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -15,6 +14,7 @@
 #include "lituya/pre/preprocess.hpp"
 #include "lituya/solver/solve.hpp"
 #include "lituya/sweep/measures.hpp"
+#include "lituya/sweep/repeats.hpp"
 #include "lituya/sweep/scene_edit.hpp"
 
 namespace lituya::verify {
@@ -59,9 +59,8 @@ Measured measure_run(const CaseContext& context, const std::filesystem::path& sc
   // The outputs come every 0.05 s, and a thrown point gains and loses its speed in a few
   // milliseconds: the solver's history records the fastest point about every 3 ms (a thousand
   // rows a stage), and the check reads both (README.md, check 2).
-  const auto history = (case_folder / "output" / "release_history.csv").string();
-  for (double speed : sweep::read_csv(history, true).column("max_speed_solid", history))
-    m.speed_ratio = std::max(m.speed_ratio, speed / free_fall);
+  m.speed_ratio = std::max(
+      m.speed_ratio, largest_in_history(case_folder, "release", "max_speed_solid") / free_fall);
   if (!frames.empty() && !r.front_position.empty()) {
     int components = 0;
     const auto mass = read_point_array(frames.back().file, "mass", components);
@@ -80,10 +79,10 @@ Measured measure_run(const CaseContext& context, const std::filesystem::path& sc
 }
 
 // The full variant runs each scene kRepeats times, the release's Courant number changed by
-// 2e-4 of itself per repeat (as `lituya sweep --repeats` does; far below any truncation
-// error). A single run's 99 % mass front scatters by about 1 % between such runs, as much as a
-// point of the 5 % convergence check (README.md, "Repeats"), so the runouts are their means;
-// a bound (the free fall, the tail) must hold in every run.
+// 2e-4 of itself per repeat (sweep::repeat_values; far below any truncation error). A single run's
+// 99 % mass front scatters by about 1 % between such runs, as much as a point of the 5 %
+// convergence check (README.md, "Repeats"), so the runouts are their means; a bound (the free fall,
+// the tail) must hold in every run.
 constexpr int kRepeats = 3;
 
 // The checks of one scene (README.md) on the run(s) `runs` of it, and its plots.
@@ -113,34 +112,33 @@ Measured check_scene(const CaseContext& context, const std::vector<Measured>& ru
   return m;
 }
 
-// kRepeats runs of `scene_name`: the first as written into <work>/<folder_name>, the others
-// from copies with the release's Courant number changed, into <work>/<folder_name>_repeat_<k>.
+// kRepeats runs of `scene_name`, the repeats of `lituya sweep --repeats` (repeats.hpp): the
+// first as written into <work>/<folder_name>, the others from copies with the release's
+// Courant number changed, into <work>/<folder_name>_repeat_<k>.
 std::vector<Measured> repeated_runs(const CaseContext& context, const std::string& scene_name,
                                     const std::string& folder_name, double cell_size,
                                     std::vector<std::vector<double>>& rows) {
   const sweep::SceneText scene(context.source / scene_name);
-  const sweep::KeyTarget courant = scene.locate("stage.release.courant");
+  const sweep::KeyTarget courant = scene.locate(sweep::repeat_key(scene.table(), scene.file()));
+  const std::vector<std::string> values =
+      sweep::repeat_values(std::stod(courant.current), kRepeats);
   std::vector<Measured> runs;
   for (int k = 0; k < kRepeats; ++k) {
-    const double factor = 1 - 2e-4 * k;
-    const double value = std::stod(courant.current) * factor;
-    std::filesystem::path file = context.source / scene_name;
+    std::filesystem::path file = scene.file();
     std::filesystem::path folder = context.work / folder_name;
     if (k > 0) {
       folder += "_repeat_" + std::to_string(k);
       std::filesystem::create_directories(folder);
       file = folder / "scene.toml";
-      char literal[32];
-      std::snprintf(literal, sizeof literal, "%.10g", value);
       write_file_atomically(file,
-                            scene.with_value(courant, scene.literals(courant, {literal}).front(),
+                            scene.with_value(courant, values[k],
                                              {"repeat " + std::to_string(k) +
-                                              " of the column case: the release's Courant "
-                                              "number changed by 2e-4 of itself per repeat"}));
+                                              " of the column case (lituya sweep --repeats)"}));
     }
     runs.push_back(measure_run(context, file, folder, cell_size));
     const Measured& m = runs.back();
-    rows.push_back({cell_size, value, m.runout, m.mass_runout, m.speed_ratio, m.tail_fraction});
+    rows.push_back(
+        {cell_size, std::stod(values[k]), m.runout, m.mass_runout, m.speed_ratio, m.tail_fraction});
   }
   return runs;
 }

@@ -22,7 +22,6 @@
 #include "lituya/post/plot.hpp"
 #include "lituya/pre/preprocess.hpp"
 #include "lituya/solver/solve.hpp"
-#include "lituya/sweep/measures.hpp"
 
 namespace lituya::verify {
 
@@ -247,13 +246,9 @@ SceneOutcome run_one(const CaseContext& context, const Scene& scene,
     // at the release (README.md, check 6).
     // No release output (a stop before it): NaN, which fails the check.
     double ratio = NAN;
-    if (release_top > release_bottom) {
-      const auto history = (case_folder / "output" / "release_history.csv").string();
-      double fastest = 0;
-      for (double speed : sweep::read_csv(history, true).column("max_speed_solid", history))
-        fastest = std::max(fastest, speed);
-      ratio = fastest / std::sqrt(2 * kGravity * (release_top - release_bottom));
-    }
+    if (release_top > release_bottom)
+      ratio = largest_in_history(case_folder, "release", "max_speed_solid") /
+              std::sqrt(2 * kGravity * (release_top - release_bottom));
     add_check(result,
               label +
                   ": largest solid speed at the history's rows / free fall through the "
