@@ -78,7 +78,6 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
   water_.damping = damping_.liquid;
   set_threads(1);
   if (volumetric_smoothing_) point_volumetric_strain_.assign(solid_.points.size(), 0.0);
-  solid_held_node_.assign(mesh_.node_count(), 0);  // no condition active before a stage
   locate_all<dim>(mesh_, solid_.points.position, solid_.points.cell, solid_.points.id, solid_.shape,
                   description_.points_file, "point");
   if (has_liquid_) setup_liquid();
@@ -175,9 +174,8 @@ void Simulation<dim>::activate_boundaries(const std::vector<std::string>& names)
         if (c->phase != BoundaryPhase::kSolid) water_.constraints.push_back(c);
       }
     }
-  solid_held_node_.assign(mesh_.node_count(), 0);
-  for (const NodalConstraint<dim>* c : solid_.constraints)
-    for (int node : c->nodes) solid_held_node_[node] = 1;
+  solid_.hold_nodes();
+  if (has_liquid_) water_.hold_nodes();
   // The nodes whose forces the boundary forces sum (wall_loads.cpp).
   collect_wall_nodes();
 }
@@ -300,21 +298,6 @@ void Simulation<dim>::smooth_volumetric_strain(double dt) {
 }
 
 template <int dim>
-bool Simulation<dim>::is_free_body(std::size_t p) const {
-  // The point is the only solid mass at every node of its cell (to a relative 1e-9, the
-  // rounding of the nodal sums), and no wall holds any of them.
-  const auto& nodes = mesh_.cell_nodes[solid_.points.cell[p]];
-  const std::vector<double>& nodal_mass = solid_.nodal.sums().mass;
-  const double mass = solid_.points.mass[p];
-  for (int i = 0; i <= dim; ++i) {
-    const int node = nodes[i];
-    if (solid_held_node_[node]) return false;
-    if (nodal_mass[node] - solid_.shape[p](i) * mass > 1e-9 * nodal_mass[node]) return false;
-  }
-  return true;
-}
-
-template <int dim>
 void Simulation<dim>::update_stress_and_relocate(double dt) {
   using Gradient = Eigen::Matrix<double, dim, dim>;
   MaterialPoints<dim>& points = solid_.points;
@@ -349,14 +332,8 @@ void Simulation<dim>::update_stress_and_relocate(double dt) {
     sigma *= points.volume[p] / volume_at_dry_density;
     if (material.max_porosity < 1.0 && porosity(p) >= material.max_porosity)
       sigma.setZero();  // n > n_max: grains separated, no effective stress (section 2.3)
-    else if (is_free_body(p))
-      // A point that is the only mass at all its nodes, none held by a wall, is a fragment
-      // flying free: no traction acts on it, and its stress relaxes within an elastic wave's
-      // transit of itself (h / c_p, less than a step). The grid cannot show that: the MUSL
-      // remap gives its nodes its own velocity, its strain is zero, and a stress it had when it
-      // left the flow stayed frozen until its next contact, which then released it at once (a
-      // grain thrown 29 % above the top of a collapsing column; scientific manual 4.1).
-      sigma.setZero();
+    else if (detail::is_free_body(solid_, mesh_, p))
+      sigma.setZero();  // a fragment flying free carries no stress (phase.hpp)
     else if (material.model == MaterialModel::kMohrCoulomb)
       points.plastic_strain[p] += material.mohr_coulomb->update(sigma, strain);
     else
@@ -481,7 +458,7 @@ std::size_t Simulation<dim>::storage_bytes() const {
                                                   sizeof(Eigen::Matrix<double, dim, dim>) +
                                                   (dim + 1) * sizeof(Vec) + 2 * sizeof(double));
   const std::size_t nodes = mesh_.node_count();
-  std::size_t bytes = solid_.bytes() + cells + solid_held_node_.size() * sizeof(char);
+  std::size_t bytes = solid_.bytes() + cells;
   if (volumetric_smoothing_)
     bytes += point_volumetric_strain_.size() * sizeof(double) +
              static_cast<std::size_t>(smoothing_.threads()) * nodes * 2 * sizeof(double);

@@ -850,9 +850,15 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
   for (std::size_t q = 0; q < n_liquid; ++q) {
     const MaterialModelData& water = materials_[liquid.material[q]];
     const double n = std::max(liquid.porosity[q], kMinimumPorosity);
-    // Eq. (8), compression positive; no tension (free surface, cavitation).
+    // Eq. (8), compression positive; no tension (free surface, cavitation). A drop flying
+    // free (no other water and no grains at its nodes, none held by a wall) is at the
+    // atmosphere's pressure: the grid sees no divergence in it, and the pressure it left the
+    // water with would stay frozen until it lands (is_free_body, phase.hpp).
     double& p = liquid.pressure[q];
-    p = std::max(0.0, p - water.bulk_modulus / n * divergence[q] * dt);
+    if (detail::is_free_body(water_, mesh_, q, &solid_.nodal.sums().mass))
+      p = 0;
+    else
+      p = std::max(0.0, p - water.bulk_modulus / n * divergence[q] * dt);
     // Water volume from eq. (7): rho_w = rho_w0 (1 + p / K_w).
     liquid.volume[q] = liquid.mass[q] / (water.liquid_density * (1.0 + p / water.bulk_modulus));
     const double speed = liquid.velocity[q].norm();

@@ -272,10 +272,6 @@ class Simulation {
   bool volumetric_smoothing_;
   detail::NodalScatter<detail::NodalAverageSums> smoothing_;
   std::vector<double> point_volumetric_strain_;
-  // Per node: 1 where an active velocity condition holds the solid (set by
-  // activate_boundaries); a point touching such a node is not a free body.
-  std::vector<char> solid_held_node_;
-  bool is_free_body(std::size_t p) const;
   TransferDamping damping_;  // the FLIP/PIC blend of each phase (copied into the phases)
   bool musl_;
   double max_velocity_;
