@@ -290,7 +290,7 @@ std::vector<Voigt6> stress_after_flight(double block_height, double duration) {
 }
 
 // A point that is the only mass at every node of its cell, none held by a wall, is a free
-// body: no traction acts on it, so it carries no stress (simulation.cpp, is_free_body). The
+// body: no traction acts on it, so it carries no stress (phase.hpp, is_free_body). The
 // MUSL remap gives such a point's nodes its own velocity, so its strain is zero and, without
 // the rule, the stress it left the flow with stayed frozen for the whole flight and was
 // released at its next contact (a grain thrown 29 % above a collapsing column's top; issue 8).

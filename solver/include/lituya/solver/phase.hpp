@@ -9,6 +9,7 @@
 //   nodes_to_points      step 3: FLIP/PIC velocity update and the point's move
 //   remap_velocity       step 4 (MUSL): nodal velocity from the updated point momenta
 //   relocate             step 5: the point's new cell, or the fault that stops the run
+//   is_free_body         a point alone at its nodes, which carries no stress (no pressure)
 // What couples the phases (porosity, drag, the pore-pressure split, eq. 8) is in
 // two_phase.cpp. Internal to the solver library; the public interface is simulation.hpp.
 #include <algorithm>
