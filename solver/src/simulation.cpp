@@ -76,6 +76,10 @@ Simulation<dim>::Simulation(CaseDescription description, Mesh<dim> mesh, Materia
   }
   solid_.damping = damping_.solid;
   water_.damping = damping_.liquid;
+  // The grains take a wall's velocity for the components it holds (phase.hpp,
+  // nodes_to_points). The water does not: there it damped the standing wave (scientific
+  // manual 4.1).
+  solid_.wall_velocity_to_points = true;
   set_threads(1);
   if (volumetric_smoothing_) point_volumetric_strain_.assign(solid_.points.size(), 0.0);
   locate_all<dim>(mesh_, solid_.points.position, solid_.points.cell, solid_.points.id, solid_.shape,

@@ -6,7 +6,8 @@
 // are written here once:
 //   scatter_to_nodes     step 1: mass, momentum, gravity and the phase's own stress divergence
 //   finish_nodal_update  step 2: velocity conditions and the nodal acceleration
-//   nodes_to_points      step 3: FLIP/PIC velocity update and the point's move
+//   nodes_to_points      step 3: FLIP/PIC velocity update and the point's move (the
+//                        grains take a wall's velocity for the components it prescribes)
 //   remap_velocity       step 4 (MUSL): nodal velocity from the updated point momenta
 //   relocate             step 5: the point's new cell, or the fault that stops the run
 //   is_free_body         a point alone at its nodes, which carries no stress (no pressure)
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
 #include "lituya/solver/boundary_conditions.hpp"
 #include "lituya/solver/mesh.hpp"
@@ -103,6 +105,19 @@ struct Phase {
   PhaseDamping damping;                // the FLIP/PIC blend of this phase
   std::vector<const NodalConstraint<dim>*> constraints;  // active velocity conditions
   std::vector<char> held_node;  // per node: 1 where one of `constraints` holds the phase
+  std::vector<int> held_nodes;  // those nodes in increasing order; `held` is parallel to it
+  // What the conditions at one node hold: projectors on the velocity components they
+  // prescribe. `always`: all components for `fixed`, the listed axes for a fixity, the normal
+  // for a roller. A contact wall holds its normal only while the grains press on it (it lets
+  // them lift off), so `in_contact` adds its normal to `always`, and `contact_normals` (the
+  // sum of n n^T of the node's contact walls) tells whether the update left the node moving
+  // along every contact normal: zero normal velocity means the wall held it.
+  struct HeldComponents {
+    Eigen::Matrix<double, dim, dim> always, in_contact, contact_normals;
+  };
+  std::vector<HeldComponents> held;
+  // Whether the points take the wall's velocity for those components (nodes_to_points).
+  bool wall_velocity_to_points = false;
 
   void allocate_nodes(int threads, std::size_t n_nodes) {
     nodal.allocate(threads, n_nodes);
@@ -110,14 +125,74 @@ struct Phase {
     node_acceleration.assign(n_nodes, Vec::Zero());
     held_node.assign(n_nodes, 0);
   }
-  // Marks the nodes the active constraints hold (after `constraints` changes).
+  bool is_held(std::size_t node) const { return held_node[node] != 0; }
+  // What held node `node` holds (a binary search: held nodes are few, and a byte per node
+  // keeps the solver's storage per point where it was).
+  std::size_t held_index(std::size_t node) const {
+    const auto at = std::lower_bound(held_nodes.begin(), held_nodes.end(), static_cast<int>(node));
+    return static_cast<std::size_t>(at - held_nodes.begin());
+  }
+  // The projector on the components the conditions at held node `node` prescribed in this
+  // step, given its velocity after them.
+  const Eigen::Matrix<double, dim, dim>& held_components(std::size_t node,
+                                                         const Vec& velocity) const {
+    const HeldComponents& h = held[held_index(node)];
+    // Pressed: no velocity along a contact normal left (to rounding; at rest counts).
+    const bool pressed =
+        (h.contact_normals * velocity).squaredNorm() <= 1e-24 * velocity.squaredNorm();
+    return pressed ? h.in_contact : h.always;
+  }
+  // Marks the nodes the active constraints hold and what they hold (after `constraints`
+  // changes). A node on several walls holds the span of their components: the projector onto
+  // the range of the sum of theirs (two rollers meeting at a corner hold both components).
   void hold_nodes() {
+    using Matrix = Eigen::Matrix<double, dim, dim>;
     std::fill(held_node.begin(), held_node.end(), 0);
     for (const NodalConstraint<dim>* c : constraints)
       for (int node : c->nodes) held_node[static_cast<std::size_t>(node)] = 1;
+    held_nodes.clear();
+    for (std::size_t node = 0; node < held_node.size(); ++node)
+      if (held_node[node]) held_nodes.push_back(static_cast<int>(node));
+    held.assign(held_nodes.size(), {Matrix::Zero(), Matrix::Zero(), Matrix::Zero()});
+    for (const NodalConstraint<dim>* c : constraints)
+      for (std::size_t k = 0; k < c->nodes.size(); ++k) {
+        HeldComponents& h = held[held_index(static_cast<std::size_t>(c->nodes[k]))];
+        switch (c->type) {
+          case BoundaryType::kFixed:
+            h.always += Matrix::Identity();
+            break;
+          case BoundaryType::kFixity:
+            for (int d : c->directions) h.always(d, d) += 1.0;
+            break;
+          case BoundaryType::kRoller:
+            h.always += c->normal[k] * c->normal[k].transpose();
+            break;
+          case BoundaryType::kContact:
+            h.contact_normals += c->normal[k] * c->normal[k].transpose();
+            break;
+          case BoundaryType::kTraction:
+            break;
+        }
+      }
+    for (HeldComponents& h : held) {
+      h.in_contact = range_projector(h.always + h.contact_normals);
+      h.always = range_projector(h.always);
+    }
+  }
+  // The orthogonal projector onto the range of a sum of n n^T (symmetric, positive).
+  static Eigen::Matrix<double, dim, dim> range_projector(
+      const Eigen::Matrix<double, dim, dim>& sum) {
+    using Matrix = Eigen::Matrix<double, dim, dim>;
+    const Eigen::SelfAdjointEigenSolver<Matrix> eigen(sum);
+    Matrix projector = Matrix::Zero();
+    for (int j = 0; j < dim; ++j)
+      if (eigen.eigenvalues()(j) > 1e-6 * dim)
+        projector += eigen.eigenvectors().col(j) * eigen.eigenvectors().col(j).transpose();
+    return projector;
   }
   std::size_t bytes() const {
     return points.bytes() + shape.size() * sizeof(Shape) +
+           held.size() * (sizeof(HeldComponents) + sizeof(int)) +
            node_velocity.size() *
                (2 * sizeof(Vec) + sizeof(char) + nodal.threads() * Sums::kBytesPerNode);
   }
@@ -141,7 +216,7 @@ bool is_free_body(const Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, 
   const double mass = phase.points.mass[p];
   for (int i = 0; i <= dim; ++i) {
     const std::size_t node = static_cast<std::size_t>(nodes[i]);
-    if (phase.held_node[node]) return false;
+    if (phase.is_held(node)) return false;
     if (other_mass && (*other_mass)[node] > kMassFloor) return false;
     if (nodal_mass[node] - phase.shape[p](i) * mass > 1e-9 * nodal_mass[node]) return false;
   }
@@ -241,6 +316,14 @@ struct NodalField {
 // dissipation), PIC takes the grid's velocity (stable, dissipative); the phase's damping sets
 // the blend. The point moves with the grid velocity. `field_of(p)` names the nodal field
 // point p reads (the water has two at the nodes it shares with a soil, two_phase.cpp).
+// With `wall_velocity_to_points` (the grains), the components a wall prescribes at a node are
+// taken from the grid at that node: the point's share N_i of them is the wall's velocity, not
+// its own plus the node's change. A wall sets a velocity, not a force, so the change v_new -
+// v_old at its node is not an acceleration that every point there underwent: FLIP handed each
+// point the same arrest -v_old (the mean of heavy and light points), and a light, parted grain
+// beside a heavy one kept its own velocity against the wall, carried it on and took it into the
+// next contact (scientific manual 4.1; thin-front note, section 12). With v_old = v_new - dt a,
+// the FLIP sum loses N_i P_i (v_p - v_old,i) at each held node i, P_i its held components.
 template <int dim, class Points, class Sums, class FieldOf>
 void nodes_to_points(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, double dt, int threads,
                      FieldOf field_of) {
@@ -253,12 +336,19 @@ void nodes_to_points(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, dou
     const auto& nodes = mesh.cell_nodes[points.cell[p]];
     const auto& n = phase.shape[p];
     const NodalField<Vec> field = field_of(p);
-    Vec acceleration = Vec::Zero(), velocity = Vec::Zero();
+    Vec acceleration = Vec::Zero(), velocity = Vec::Zero(), against_wall = Vec::Zero();
     for (int i = 0; i <= dim; ++i) {
-      acceleration += n(i) * field.acceleration[nodes[i]];
-      velocity += n(i) * field.velocity[nodes[i]];
+      const int node = nodes[i];
+      acceleration += n(i) * field.acceleration[node];
+      velocity += n(i) * field.velocity[node];
+      if (phase.wall_velocity_to_points && phase.is_held(node)) {
+        const Vec old = field.velocity[node] - dt * field.acceleration[node];
+        against_wall +=
+            n(i) * (phase.held_components(node, field.velocity[node]) * (points.velocity[p] - old));
+      }
     }
-    points.velocity[p] = flip * (points.velocity[p] + dt * acceleration) + (1 - flip) * velocity;
+    points.velocity[p] =
+        flip * (points.velocity[p] + dt * acceleration - against_wall) + (1 - flip) * velocity;
     points.position[p] += dt * velocity;
     if constexpr (requires { points.displacement; }) points.displacement[p] += dt * velocity;
   }
