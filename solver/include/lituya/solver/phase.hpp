@@ -106,16 +106,10 @@ struct Phase {
   std::vector<const NodalConstraint<dim>*> constraints;  // active velocity conditions
   std::vector<char> held_node;  // per node: 1 where one of `constraints` holds the phase
   std::vector<int> held_nodes;  // those nodes in increasing order; `held` is parallel to it
-  // What the conditions at one node hold: projectors on the velocity components they
-  // prescribe. `always`: all components for `fixed`, the listed axes for a fixity, the normal
-  // for a roller. A contact wall holds its normal only while the grains press on it (it lets
-  // them lift off), so `in_contact` adds its normal to `always`, and `contact_normals` (the
-  // sum of n n^T of the node's contact walls) tells whether the update left the node moving
-  // along every contact normal: zero normal velocity means the wall held it.
-  struct HeldComponents {
-    Eigen::Matrix<double, dim, dim> always, in_contact, contact_normals;
-  };
-  std::vector<HeldComponents> held;
+  // What the conditions at each held node hold: the projector on the velocity components
+  // they prescribe (all for `fixed`, the listed axes for a fixity, the normal for a roller or
+  // a contact wall), parallel to `held_nodes`.
+  std::vector<Eigen::Matrix<double, dim, dim>> held;
   // Whether the points take the wall's velocity for those components (nodes_to_points).
   bool wall_velocity_to_points = false;
 
@@ -132,15 +126,12 @@ struct Phase {
     const auto at = std::lower_bound(held_nodes.begin(), held_nodes.end(), static_cast<int>(node));
     return static_cast<std::size_t>(at - held_nodes.begin());
   }
-  // The projector on the components the conditions at held node `node` prescribed in this
-  // step, given its velocity after them.
-  const Eigen::Matrix<double, dim, dim>& held_components(std::size_t node,
-                                                         const Vec& velocity) const {
-    const HeldComponents& h = held[held_index(node)];
-    // Pressed: no velocity along a contact normal left (to rounding; at rest counts).
-    const bool pressed =
-        (h.contact_normals * velocity).squaredNorm() <= 1e-24 * velocity.squaredNorm();
-    return pressed ? h.in_contact : h.always;
+  // The projector on the components the conditions at held node `node` prescribe. A contact
+  // wall counts as holding its normal also where the grains lift off: a version that held it
+  // only while they pressed (no normal velocity left after the conditions) threw a point of a
+  // collapsing column at 14 m/s (stop 48; `Simulation.CohesionlessSandCollapsesFromZeroStress`).
+  const Eigen::Matrix<double, dim, dim>& held_components(std::size_t node) const {
+    return held[held_index(node)];
   }
   // Marks the nodes the active constraints hold and what they hold (after `constraints`
   // changes). A node on several walls holds the span of their components: the projector onto
@@ -153,31 +144,26 @@ struct Phase {
     held_nodes.clear();
     for (std::size_t node = 0; node < held_node.size(); ++node)
       if (held_node[node]) held_nodes.push_back(static_cast<int>(node));
-    held.assign(held_nodes.size(), {Matrix::Zero(), Matrix::Zero(), Matrix::Zero()});
+    held.assign(held_nodes.size(), Matrix::Zero());
     for (const NodalConstraint<dim>* c : constraints)
       for (std::size_t k = 0; k < c->nodes.size(); ++k) {
-        HeldComponents& h = held[held_index(static_cast<std::size_t>(c->nodes[k]))];
+        Matrix& sum = held[held_index(static_cast<std::size_t>(c->nodes[k]))];
         switch (c->type) {
           case BoundaryType::kFixed:
-            h.always += Matrix::Identity();
+            sum += Matrix::Identity();
             break;
           case BoundaryType::kFixity:
-            for (int d : c->directions) h.always(d, d) += 1.0;
+            for (int d : c->directions) sum(d, d) += 1.0;
             break;
           case BoundaryType::kRoller:
-            h.always += c->normal[k] * c->normal[k].transpose();
-            break;
           case BoundaryType::kContact:
-            h.contact_normals += c->normal[k] * c->normal[k].transpose();
+            sum += c->normal[k] * c->normal[k].transpose();
             break;
           case BoundaryType::kTraction:
             break;
         }
       }
-    for (HeldComponents& h : held) {
-      h.in_contact = range_projector(h.always + h.contact_normals);
-      h.always = range_projector(h.always);
-    }
+    for (Matrix& sum : held) sum = range_projector(sum);
   }
   // The orthogonal projector onto the range of a sum of n n^T (symmetric, positive).
   static Eigen::Matrix<double, dim, dim> range_projector(
@@ -192,7 +178,7 @@ struct Phase {
   }
   std::size_t bytes() const {
     return points.bytes() + shape.size() * sizeof(Shape) +
-           held.size() * (sizeof(HeldComponents) + sizeof(int)) +
+           held.size() * (sizeof(Eigen::Matrix<double, dim, dim>) + sizeof(int)) +
            node_velocity.size() *
                (2 * sizeof(Vec) + sizeof(char) + nodal.threads() * Sums::kBytesPerNode);
   }
@@ -343,8 +329,7 @@ void nodes_to_points(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, dou
       velocity += n(i) * field.velocity[node];
       if (phase.wall_velocity_to_points && phase.is_held(node)) {
         const Vec old = field.velocity[node] - dt * field.acceleration[node];
-        against_wall +=
-            n(i) * (phase.held_components(node, field.velocity[node]) * (points.velocity[p] - old));
+        against_wall += n(i) * (phase.held_components(node) * (points.velocity[p] - old));
       }
     }
     points.velocity[p] =
