@@ -11,6 +11,10 @@ reports for its three finest sizes, for any three sizes picked from a table of r
 solved by fixed-point iteration; f_ext = (r21^p f1 - f2) / (r21^p - 1). When e32 / e21 < 0
 the changes alternate in sign and no order exists.
 
+This repeats, in Python, what `sweep/src/convergence.cpp` computes for a sweep's own runs: it
+exists only because no `lituya` command yet re-reports that convergence for sizes taken from
+several sweeps. When one does, use it and delete this file.
+
 Usage: richardson.py MEANS.csv MEASURE H1 H2 H3
 MEANS.csv has the columns cell_size_m, measure, mean (one row per size and measure).
 """
