@@ -13,6 +13,7 @@
 #include <boost/program_options.hpp>
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -29,6 +30,7 @@
 #include "lituya/solver/solve.hpp"
 #include "lituya/sweep/definition.hpp"
 #include "lituya/sweep/repeats.hpp"
+#include "lituya/sweep/report.hpp"
 #include "lituya/sweep/sweep.hpp"
 #include "lituya/verify/runner.hpp"
 
@@ -60,6 +62,9 @@ usage:
   lituya sweep  SWEEP.toml [--measure M,...] [-o DIR] [--jobs N] [--threads N]
                 [--force | --resume] [--dry-run] [--no-reuse]
                                                    the same, defined in a sweep file
+  lituya sweep  DIR [--merge DIR2 ...] [--sizes H1,H2,H3] [-o FILE.csv] [--force]
+                                                   report finished sweeps again, their mesh
+                                                   convergence from the sizes chosen
   lituya COMMAND --help                            the command's usage and options
   lituya --version                                 the version and the git commit built from
 
@@ -95,7 +100,14 @@ the last stage's Courant number changed by 2e-4 of itself per repeat (a change f
 any truncation error) and reports each measure's mean and spread (repeats.csv): a setting's
 effect, or a refinement step, is resolved only where it exceeds that spread; a sweep over
 mesh.cell_size then extrapolates the means. Exit code 5: at least one run of the sweep
-failed (the table marks it; the others are complete).)";
+failed (the table marks it; the others are complete).
+
+Given the folder DIR of a finished sweep instead, nothing is run: its runs, their repeats'
+spread and its mesh convergence are reported again from DIR/sweep.json. --merge DIR2 adds
+the runs of another sweep of the same keys (a finer size run on its own, say; repeatable);
+the measures all of them have are reported. --sizes H1,H2,H3 makes the Richardson estimate
+from those three cell sizes instead of the three finest. -o FILE.csv also writes the mesh
+convergence table there (the columns of a sweep's convergence.csv).)";
 
 const std::vector<std::string> kCommands = {"pre", "solve", "post", "run", "verify", "sweep"};
 
@@ -158,6 +170,8 @@ struct Options {
   bool dry_run = false;                 // sweep
   bool no_reuse = false;                // sweep
   int repeats = 0;                      // sweep: 0 = as the sweep file says (default 1)
+  std::vector<std::string> merge;       // sweep report: more sweep folders
+  std::string sizes;                    // sweep report: H1,H2,H3 of the Richardson estimate
   bool allow_incomplete = false;        // post
   bool allow_large_mesh = false;        // pre, run
   bool resume = false;                  // solve, sweep
@@ -287,12 +301,15 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
                      "[--force | --resume] [--dry-run]\n              [--no-reuse] [--repeats N]\n"
                      "       lituya sweep SWEEP.toml [--measure M,...] [-o DIR] [--jobs N] "
                      "[--threads N] [--force | --resume]\n              [--dry-run] [--no-reuse] "
-                     "[--repeats N]",
+                     "[--repeats N]\n"
+                     "       lituya sweep DIR [--merge DIR2 ...] [--sizes H1,H2,H3] [-o FILE.csv] "
+                     "[--force]",
                      std::string("Run the scene once per value of KEY, or per combination of the "
                                  "values of several\nKEYs (pre + solve + post), then tabulate and "
                                  "plot the measures against it.\n\n") +
                          kSweepDetails,
-                     "a scene file (with --parameter and --values) or a sweep file");
+                     "a scene file (with --parameter and --values), a sweep file, or the folder "
+                     "of a finished sweep");
     c.options.add_options()("parameter,p", po::value(&o.parameters)->composing()->value_name("KEY"),
                             "the scene key to vary (repeatable, one --values each)")(
         "values", po::value(&o.values)->composing()->value_name("V1,V2,..."),
@@ -310,8 +327,15 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
         "run every run whole, even the first stages it shares with another run")(
         "repeats", po::value(&o.repeats)->value_name("N"),
         "make each run N times (2-20), the last stage's Courant number changed by 2e-4 of "
-        "itself per repeat, and report each measure's mean and spread");
-    output(c.options, "the sweep folder (default: sweep_<KEY>/ next to the scene file)");
+        "itself per repeat, and report each measure's mean and spread")(
+        "merge", po::value(&o.merge)->composing()->value_name("DIR2"),
+        "with a sweep folder: add the runs of another finished sweep (repeatable)")(
+        "sizes", po::value(&o.sizes)->value_name("H1,H2,H3"),
+        "with a sweep folder: the three cell sizes of the Richardson estimate (default: the "
+        "three finest)");
+    output(c.options,
+           "the sweep folder (default: sweep_<KEY>/ next to the scene file); with a sweep "
+           "folder: a file for the mesh convergence table");
     threads_option(c.options);
     force(c.options, "write into a sweep folder that already holds files and run every run again");
     common(c.options);
@@ -571,8 +595,54 @@ constexpr int kSweepRunFailed = 5;
 // Exit code of `lituya verify` when at least one check failed.
 constexpr int kVerifyFailed = 4;
 
+// `lituya sweep DIR ...`: finished sweeps reported again (sweep/report.hpp).
+int report_sweeps(const Options& o) {
+  if (!o.parameters.empty() || !o.values.empty() || o.combine != "grid" || !o.measures.empty() ||
+      o.repeats != 0 || o.resume || o.dry_run || o.no_reuse || o.jobs != 1)
+    throw UsageError("sweep", o.input +
+                                  " is a sweep folder: it is reported, not run, and takes only "
+                                  "--merge, --sizes, -o and --force");
+  std::vector<double> sizes;
+  if (!o.sizes.empty()) {
+    for (const std::string& item : lituya::sweep::split_list(o.sizes)) {
+      double h = 0;
+      const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), h);
+      if (error != std::errc() || end != item.data() + item.size() || !(h > 0) || !std::isfinite(h))
+        throw UsageError("sweep",
+                         "--sizes takes three positive cell sizes in metres, not '" + item + "'");
+      sizes.push_back(h);
+    }
+    std::vector<double> sorted = sizes;
+    std::sort(sorted.begin(), sorted.end());
+    if (sorted.size() != 3 || sorted[0] == sorted[1] || sorted[1] == sorted[2])
+      throw UsageError("sweep",
+                       "--sizes takes three distinct cell sizes, H1,H2,H3 (got '" + o.sizes + "')");
+  }
+  if (!o.output.empty() && fs::exists(o.output) && !o.force)
+    throw UsageError("sweep", o.output + " exists: give --force to overwrite it");
+  std::vector<fs::path> folders{o.input};
+  folders.insert(folders.end(), o.merge.begin(), o.merge.end());
+  const lituya::sweep::MergedSweep merged = lituya::sweep::merge_sweeps(folders);
+  std::vector<lituya::sweep::MeshConvergenceRow> convergence;
+  std::cout << lituya::sweep::format_report(merged, sizes, &convergence);
+  if (!o.output.empty()) {
+    if (convergence.empty())
+      throw UsageError("sweep", "no mesh convergence to write to " + o.output +
+                                    " (the sweeps need three cell sizes that finished)");
+    lituya::sweep::write_convergence_table(o.output, convergence);
+    std::cout << "mesh convergence: " << o.output << "\n";
+  }
+  return 0;
+}
+
 int run_sweep(const Options& o, std::ostream& errors) {
   StepTimer timer(o, "sweep");
+  if (fs::is_directory(o.input)) return report_sweeps(o);
+  if (!o.merge.empty() || !o.sizes.empty())
+    throw UsageError("sweep",
+                     "--merge and --sizes report finished sweeps: give a sweep folder, "
+                     "not " +
+                         o.input);
   lituya::sweep::SweepDefinition definition;
   if (lituya::sweep::is_sweep_file(o.input)) {
     if (!o.parameters.empty() || !o.values.empty() || o.combine != "grid")

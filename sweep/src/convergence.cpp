@@ -24,20 +24,26 @@ constexpr const char* kCellSizeKey = "mesh.cell_size";
 // coarsest is too coarse.
 constexpr double kHighestPlausibleOrder = 3.0;
 
-// The observed order for 0 < e21 / e32 < 1 by the fixed-point iteration of Celik et al.
-// (2008), eq. (3): p ln r21 = |ln|e32 / e21| + q(p)|, q(p) = ln((r21^p - 1) / (r32^p - 1)).
-// NaN when it does not settle.
+// The observed order: the p > 0 with g(p) = e32 / e21, g(p) = r21^p (r32^p - 1) / (r21^p - 1),
+// which is Celik et al. (2008) eq. (3), p ln r21 = ln(e32 / e21) + ln((r21^p - 1) / (r32^p - 1)),
+// without its absolute value. g rises monotonically from ln r32 / ln r21 (p -> 0) without
+// bound, so a root exists exactly when e32 / e21 exceeds ln r32 / ln r21 (the caller checks),
+// and bisection on ln g finds it. (The absolute value of the paper's fixed-point form admits a
+// spurious "order" for ratios below that bound when r21 != r32: Case B's X1 at 0.005 / 0.0075 /
+// 0.015 m read as order 8.5 that way, where no positive order fits.) NaN above p = 64.
 double observed_order(double r21, double r32, double ratio) {
-  const double log_ratio = std::log(std::abs(ratio));  // ln|e32 / e21| > 0
-  double p = log_ratio / std::log(r21);
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    const double q = std::log((std::pow(r21, p) - 1.0) / (std::pow(r32, p) - 1.0));
-    const double next = std::abs(log_ratio + q) / std::log(r21);
-    if (!std::isfinite(next)) return NAN;
-    if (std::abs(next - p) <= 1e-12 * std::max(1.0, next)) return next;
-    p = next;
+  const double target = std::log(ratio);  // ln(e32 / e21)
+  const double log_r21 = std::log(r21), log_r32 = std::log(r32);
+  const auto log_g = [&](double p) {
+    return p * log_r21 + std::log(std::expm1(p * log_r32)) - std::log(std::expm1(p * log_r21));
+  };
+  double low = 0, high = 64;
+  if (!(log_g(high) >= target)) return NAN;
+  for (int iteration = 0; iteration < 200 && high - low > 1e-14 * high; ++iteration) {
+    const double p = 0.5 * (low + high);
+    (log_g(p) < target ? low : high) = p;
   }
-  return NAN;
+  return 0.5 * (low + high);
 }
 
 std::string percent(double fraction) {
@@ -104,9 +110,12 @@ RichardsonEstimate richardson_estimate(const std::array<double, 3>& cell_size,
     e.note = "the changes alternate in sign: no order or extrapolation; refine further";
     return e;
   }
-  if (!(ratio < 1)) {
+  // A positive order needs R < ln r21 / ln r32 (observed_order); with equal ratios, R < 1.
+  if (!(ratio < std::log(r21) / std::log(r32))) {
     e.behaviour = ConvergenceBehaviour::kNotConverging;
-    e.note = "the finest step changed the value at least as much as the one before";
+    e.note = r21 == r32 ? "the finest step changed the value at least as much as the one before"
+                        : "the finest step changed the value by more than any positive order "
+                          "allows for these refinement ratios";
     return e;
   }
   e.behaviour = ConvergenceBehaviour::kMonotone;
@@ -129,7 +138,22 @@ RichardsonEstimate richardson_estimate(const std::array<double, 3>& cell_size,
   return e;
 }
 
-std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result) {
+std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result,
+                                                 const std::vector<double>& cell_sizes) {
+  if (!cell_sizes.empty()) {
+    std::vector<double> sorted = cell_sizes;
+    std::sort(sorted.begin(), sorted.end());
+    if (sorted.size() != 3 || !(sorted[0] > 0) || !std::isfinite(sorted[2]) ||
+        !(sorted[0] < sorted[1]) || !(sorted[1] < sorted[2]))
+      throw std::invalid_argument("give three distinct positive cell sizes");
+  }
+  // A run's cell size is one of the chosen ones when it agrees to a part in 1e9 (the sizes
+  // are read from text in both places, but may be written differently: 0.0050 and 5e-3).
+  const auto chosen = [&](double h) {
+    if (cell_sizes.empty()) return true;
+    return std::any_of(cell_sizes.begin(), cell_sizes.end(),
+                       [h](double c) { return std::abs(h - c) <= 1e-9 * c; });
+  };
   const auto key = std::find(result.parameters.begin(), result.parameters.end(), kCellSizeKey);
   if (key == result.parameters.end()) return {};
   const std::size_t cell_key = static_cast<std::size_t>(key - result.parameters.begin());
@@ -156,7 +180,7 @@ std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result) {
           if (used != run->values[cell_key].size()) h = NAN;
         } catch (const std::exception&) {
         }
-        if (!(h > 0) || !std::isfinite(run->measures[m])) continue;
+        if (!(h > 0) || !chosen(h) || !std::isfinite(run->measures[m])) continue;
         by_size[h].push_back(run);
       }
       if (by_size.size() < 3) continue;
@@ -219,7 +243,7 @@ void write_convergence_table(const std::filesystem::path& file,
   table.write(file);
 }
 
-std::string format_convergence(const std::vector<MeshConvergenceRow>& rows) {
+std::string format_convergence(const std::vector<MeshConvergenceRow>& rows, bool chosen_sizes) {
   if (rows.empty()) return "";
   std::vector<std::vector<std::string>> lines{{"measure", "cell sizes (m)", "values", "last change",
                                                "behaviour", "order", "extrapolated", "GCI"}};
@@ -242,8 +266,9 @@ std::string format_convergence(const std::vector<MeshConvergenceRow>& rows) {
     lines.push_back(line);
   }
   std::ostringstream out;
-  out << "mesh convergence (three finest cell sizes, fine first; Richardson extrapolation and "
-         "grid convergence index after Celik et al. 2008):\n"
+  out << "mesh convergence (" << (chosen_sizes ? "the three chosen" : "three finest")
+      << " cell sizes, fine first; Richardson extrapolation and grid convergence index after "
+         "Celik et al. 2008):\n"
       << align_columns(lines);
   for (const MeshConvergenceRow& row : rows)
     if (!row.estimate.note.empty())

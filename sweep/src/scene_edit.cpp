@@ -327,6 +327,13 @@ SceneText::SceneText(const fs::path& scene) : file_(scene) {
   table_ = parse_scene(text_, file_.string());
 }
 
+std::string key_label(const std::string& key) {
+  const std::vector<std::string> parts = split_key(key);
+  if (parts.empty()) return key;
+  return as_index(parts.back()) && parts.size() > 1 ? parts[parts.size() - 2] + "." + parts.back()
+                                                    : parts.back();
+}
+
 KeyTarget SceneText::locate(const std::string& key) const {
   const std::string file = file_.string();
   const Walk w = walk(table_, key, [&](int line, const std::string& message) {
@@ -335,11 +342,8 @@ KeyTarget SceneText::locate(const std::string& key) const {
   KeyTarget target;
   target.key = key;
   target.where = w.where;
-  const std::vector<std::string> parts = split_key(key);
-  target.leaf = parts.back();
-  target.label = as_index(target.leaf) && parts.size() > 1
-                     ? parts[parts.size() - 2] + "." + target.leaf
-                     : target.leaf;
+  target.leaf = split_key(key).back();
+  target.label = key_label(key);
   target.is_file = is_file_key(key);
   target.line = w.line;
   if (w.value) {

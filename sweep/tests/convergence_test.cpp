@@ -55,6 +55,24 @@ TEST(Richardson, OscillatingAndGrowingChangesGiveNoEstimate) {
   EXPECT_NEAR(growing.change_fine, -0.1 / 1.1, 1e-14);
 }
 
+// With unequal ratios the bound on R = e21 / e32 is ln r21 / ln r32, not 1 (convergence.hpp).
+// f = 1 + h at 0.01 / 0.04 / 0.05 m (r21 = 4, r32 = 1.25): the finest step changes f three
+// times as much as the one before, yet the order is 1 and the limit 1. Case B's first crest
+// at X1 at 0.005 / 0.0075 / 0.015 m (46.08, 46.69, 46.92 mm; r21 = 1.5, r32 = 2) has
+// R = 2.65 above the bound 0.585: no positive order fits, where the absolute value in Celik's
+// fixed-point form read an order of 8.5 and a limit of 46.1 mm.
+TEST(Richardson, TheBoundOnTheChangesFollowsTheRefinementRatios) {
+  const RichardsonEstimate wide = richardson_estimate({0.01, 0.04, 0.05}, {1.01, 1.04, 1.05});
+  EXPECT_EQ(wide.behaviour, ConvergenceBehaviour::kMonotone);
+  EXPECT_NEAR(wide.order, 1.0, 1e-9);
+  EXPECT_NEAR(wide.extrapolated, 1.0, 1e-12);
+  const RichardsonEstimate crest =
+      richardson_estimate({0.005, 0.0075, 0.015}, {46.08, 46.69, 46.92});
+  EXPECT_EQ(crest.behaviour, ConvergenceBehaviour::kNotConverging);
+  EXPECT_TRUE(std::isnan(crest.order));
+  EXPECT_NE(crest.note.find("refinement ratios"), std::string::npos);
+}
+
 TEST(Richardson, EqualValuesAreUnchanged) {
   const RichardsonEstimate e = richardson_estimate({0.01, 0.015, 0.02}, {2.0, 2.0, 2.0});
   EXPECT_EQ(e.behaviour, ConvergenceBehaviour::kUnchanged);

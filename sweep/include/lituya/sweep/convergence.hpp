@@ -11,14 +11,18 @@
 // discretization in CFD applications", J. Fluids Eng. 130, 078001; Roache 1994 for the grid
 // convergence index): with h1 < h2 < h3 and values f1, f2, f3, r21 = h2 / h1, r32 = h3 / h2,
 // e21 = f2 - f1, e32 = f3 - f2, the ratio R = e21 / e32 says how the value behaves:
-//   0 < R < 1  monotone convergence: the observed order p solves
-//                p ln r21 = |ln|e32 / e21| + ln((r21^p - 1) / (r32^p - 1))|
-//              (fixed-point iteration; for r21 = r32 = r it is ln(e32 / e21) / ln r), the
-//              extrapolated value is f_ext = (r21^p f1 - f2) / (r21^p - 1) and the fine
-//              grid convergence index GCI = 1.25 |(f1 - f2) / f1| / (r21^p - 1);
+//   0 < R < ln r21 / ln r32 (R < 1 for equal ratios)
+//              monotone convergence: the observed order p > 0 solves
+//                p ln r21 = ln(e32 / e21) + ln((r21^p - 1) / (r32^p - 1))
+//              (Celik's eq. 3 without its absolute value, which admits spurious orders when
+//              r21 != r32; for r21 = r32 = r it is ln(e32 / e21) / ln r), the extrapolated value
+//              is f_ext = (r21^p f1 - f2) / (r21^p - 1) and the fine grid convergence index
+//              GCI = 1.25 |(f1 - f2) / f1| / (r21^p - 1);
 //   R < 0      oscillatory: the changes alternate in sign, no order or extrapolation;
-//   R >= 1     not converging: the finest step changed the value at least as much as the one
-//              before it, no order or extrapolation.
+//   R >= ln r21 / ln r32
+//              not converging: the finest step changed the value by more than any positive
+//              order allows (at least as much as the one before, for equal ratios); no order
+//              or extrapolation. The bound is where the right-hand side's p -> 0 limit lies.
 // An order far above the scheme's own (linear shape functions: at most 2) means the values are
 // not yet in the asymptotic range (or are levelling off by chance); the note says so.
 #include <array>
@@ -68,14 +72,19 @@ struct MeshConvergenceRow {
 // cell sizes among the runs that finished with a value of that measure, each size's value the
 // mean of its repeats. With repeats, the note says when the last change is within twice its
 // standard error. Nothing for other sweeps, or where fewer than
-// three cell sizes are left.
-std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result);
+// three cell sizes are left. With `cell_sizes` (three distinct positive sizes, in any order;
+// std::invalid_argument otherwise) the estimate is made from those sizes instead of the three
+// finest, and nothing for a measure that lacks a finished run at one of them.
+std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result,
+                                                 const std::vector<double>& cell_sizes = {});
 
 // DIR/convergence.csv: one row per estimate (file-formats manual).
 void write_convergence_table(const std::filesystem::path& file,
                              const std::vector<MeshConvergenceRow>& rows);
 
-// The table printed at the end of the sweep's report.
-std::string format_convergence(const std::vector<MeshConvergenceRow>& rows);
+// The table printed at the end of the sweep's report (`chosen_sizes`: the estimates were made
+// from sizes the user chose, not the three finest; the heading says so).
+std::string format_convergence(const std::vector<MeshConvergenceRow>& rows,
+                               bool chosen_sizes = false);
 
 }  // namespace lituya::sweep

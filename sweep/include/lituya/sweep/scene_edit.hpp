@@ -21,12 +21,16 @@ enum class ValueType { kInteger, kNumber, kString, kBoolean };
 // "an integer", "a number", "a string", "a boolean" (for messages).
 std::string describe(ValueType type);
 
+// The short name of a key for tables: its last part ("friction_angle" for
+// `material.beads.friction_angle`), with the part before it for an index ("gravity.1").
+std::string key_label(const std::string& key);
+
 // Where a sweep key points in the scene.
 struct KeyTarget {
   std::string key;                      // as given
   std::string where;                    // for messages, e.g. "[[material]] \"beads\""
   std::string leaf;                     // the last key, e.g. "friction_angle"
-  std::string label;                    // short name for tables: the leaf, "gravity.1" for an index
+  std::string label;                    // key_label(key)
   std::vector<std::string> siblings;    // the keys the scene sets next to it, or at the top
                                         // level for a new table (when not present)
   bool present = false;                 // false: the scene does not set it, a copy adds it

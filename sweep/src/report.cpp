@@ -1,0 +1,186 @@
+// A finished sweep reported again (report.hpp says why and how).
+#include "lituya/sweep/report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "lituya/common/csv_writer.hpp"
+#include "lituya/common/input_error.hpp"
+#include "lituya/common/json_file.hpp"
+#include "lituya/sweep/progress.hpp"
+#include "lituya/sweep/repeats.hpp"
+#include "lituya/sweep/scene_edit.hpp"
+
+namespace lituya::sweep {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kSummaryFile = "sweep.json";
+constexpr const char* kSummaryFormat = "lituya-sweep-summary";
+
+// A key's value as the run table shows it: numbers in their shortest exact form (as the run's
+// folder name and sweep.csv have them), strings as they are.
+std::string value_text(const Json& value) {
+  if (value.is_number()) return csv_number(value.get<double>());
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+  return value.dump();
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+RunStatus status_from_text(const std::string& text) {
+  for (RunStatus s :
+       {RunStatus::kOk, RunStatus::kInputError, RunStatus::kRunStopped, RunStatus::kError})
+    if (status_text(s) == text) return s;
+  return RunStatus::kError;
+}
+
+}  // namespace
+
+SweepResult read_sweep_summary(const fs::path& folder) {
+  const fs::path file = folder / kSummaryFile;
+  std::ifstream in(file);
+  if (!in)
+    throw InputError(folder.string(), 0,
+                     "not a sweep folder: it has no " + std::string(kSummaryFile) +
+                         " (a sweep writes one when it ends)");
+  SweepResult result;
+  result.folder = folder;
+  result.summary = file;
+  try {
+    const Json j = Json::parse(in);
+    if (j.value("format", std::string()) != kSummaryFormat)
+      throw InputError(file.string(), 0,
+                       "expected a sweep summary (format = \"" + std::string(kSummaryFormat) +
+                           "\"), found another JSON file");
+    result.parameters = j.at("parameters").get<std::vector<std::string>>();
+    for (const std::string& key : result.parameters) result.labels.push_back(key_label(key));
+    result.measures = j.at("measures").get<std::vector<std::string>>();
+    if (j.contains("repeat_key")) {
+      const auto key = std::find(result.parameters.begin(), result.parameters.end(),
+                                 j.at("repeat_key").get<std::string>());
+      if (key != result.parameters.end())
+        result.repeat_parameter = static_cast<int>(key - result.parameters.begin());
+    }
+    for (const Json& r : j.at("runs")) {
+      RunRecord run;
+      run.number = r.at("number").get<int>();
+      run.folder = folder / r.at("folder").get<std::string>();
+      const Json& values = r.at("values");
+      for (const std::string& key : result.parameters)
+        run.values.push_back(value_text(values.at(key)));
+      run.status = status_from_text(r.at("status").get<std::string>());
+      run.kept = r.value("kept", false);
+      const Json& wall = r.at("wall_time");
+      run.wall_time = wall.is_number() ? wall.get<double>() : NAN;
+      const Json& measures = r.at("measures");
+      for (const std::string& m : result.measures) {
+        const auto v = measures.find(m);
+        run.measures.push_back(v != measures.end() && v->is_number() ? v->get<double>() : NAN);
+      }
+      run.message = r.value("message", std::string());
+      result.runs.push_back(std::move(run));
+    }
+  } catch (const Json::exception& e) {
+    throw InputError(
+        file.string(), 0,
+        std::string("expected a sweep summary as `lituya sweep` writes it: ") + e.what());
+  }
+  return result;
+}
+
+MergedSweep merge_sweeps(const std::vector<fs::path>& folders) {
+  if (folders.empty()) throw std::invalid_argument("merge_sweeps needs at least one folder");
+  MergedSweep merged;
+  merged.result = read_sweep_summary(folders.front());
+  SweepResult& all = merged.result;
+  merged.sources.push_back({folders.front(), 0, 0});
+  int last = 0;
+  for (const RunRecord& run : all.runs) last = std::max(last, run.number);
+  merged.sources.back().first = all.runs.empty() ? 0 : all.runs.front().number;
+  merged.sources.back().last = last;
+  for (size_t f = 1; f < folders.size(); ++f) {
+    SweepResult more = read_sweep_summary(folders[f]);
+    if (more.parameters != all.parameters || more.repeat_parameter != all.repeat_parameter) {
+      throw InputError(more.summary.string(), 0,
+                       "its keys (" + join(more.parameters) + ") differ from those of " +
+                           all.summary.string() + " (" + join(all.parameters) +
+                           "): only sweeps of the same keys, the repeat key too, can be merged");
+    }
+    // Keep the measures both have, in the first sweep's order.
+    std::vector<size_t> keep_all, keep_more;
+    for (size_t m = 0; m < all.measures.size(); ++m) {
+      const auto it = std::find(more.measures.begin(), more.measures.end(), all.measures[m]);
+      if (it == more.measures.end()) continue;
+      keep_all.push_back(m);
+      keep_more.push_back(static_cast<size_t>(it - more.measures.begin()));
+    }
+    if (keep_all.empty())
+      throw InputError(more.summary.string(), 0,
+                       "it has no measure in common with " + all.summary.string());
+    std::vector<std::string> measures;
+    for (size_t m : keep_all) measures.push_back(all.measures[m]);
+    all.measures = measures;
+    for (RunRecord& run : all.runs) {
+      std::vector<double> kept;
+      for (size_t m : keep_all) kept.push_back(run.measures[m]);
+      run.measures = kept;
+    }
+    RunSource source{folders[f], last + 1, last};
+    for (RunRecord& run : more.runs) {
+      std::vector<double> kept;
+      for (size_t m : keep_more) kept.push_back(run.measures[m]);
+      run.measures = kept;
+      run.number = ++last;
+      all.runs.push_back(std::move(run));
+    }
+    source.last = last;
+    merged.sources.push_back(source);
+  }
+  return merged;
+}
+
+std::string format_report(const MergedSweep& merged, const std::vector<double>& cell_sizes,
+                          std::vector<MeshConvergenceRow>* convergence) {
+  const SweepResult& result = merged.result;
+  std::vector<MeshConvergenceRow> rows = mesh_convergence(result, cell_sizes);
+  if (!cell_sizes.empty() && rows.empty()) {
+    std::vector<double> sizes;
+    const auto key =
+        std::find(result.parameters.begin(), result.parameters.end(), "mesh.cell_size");
+    if (key == result.parameters.end())
+      throw InputError(merged.sources.front().folder.string(), 0,
+                       "--sizes needs a sweep over mesh.cell_size; this one varies other keys");
+    std::vector<std::string> present;
+    const size_t cell_key = static_cast<size_t>(key - result.parameters.begin());
+    for (const RunRecord& run : result.runs)
+      if (run.status == RunStatus::kOk &&
+          std::find(present.begin(), present.end(), run.values[cell_key]) == present.end())
+        present.push_back(run.values[cell_key]);
+    std::vector<std::string> asked;
+    for (double h : cell_sizes) asked.push_back(short_number(h));
+    throw InputError(merged.sources.front().folder.string(), 0,
+                     "no measure has finished runs at all of the cell sizes " + join(asked) +
+                         " (the runs that finished have " + join(present) + ")");
+  }
+  std::ostringstream out;
+  if (merged.sources.size() > 1)
+    for (const RunSource& s : merged.sources)
+      out << "runs " << s.first << "-" << s.last << ": " << s.folder.string() << "\n";
+  out << format_table(result) << format_repeats(repeat_summary(result))
+      << format_convergence(rows, /*chosen_sizes=*/!cell_sizes.empty());
+  if (convergence) *convergence = std::move(rows);
+  return out.str();
+}
+
+}  // namespace lituya::sweep
