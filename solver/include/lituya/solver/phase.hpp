@@ -126,7 +126,8 @@ struct Phase {
     const auto at = std::lower_bound(held_nodes.begin(), held_nodes.end(), static_cast<int>(node));
     return static_cast<std::size_t>(at - held_nodes.begin());
   }
-  // The projector on the components the conditions at held node `node` prescribe. A contact
+  // The projector on the components the conditions at held node `node` prescribe (built only
+  // with `wall_velocity_to_points`). A contact
   // wall counts as holding its normal also where the grains lift off: a version that held it
   // only while they pressed (no normal velocity left after the conditions) threw a point of a
   // collapsing column at 14 m/s (stop 48; `Simulation.CohesionlessSandCollapsesFromZeroStress`).
@@ -144,6 +145,10 @@ struct Phase {
     held_nodes.clear();
     for (std::size_t node = 0; node < held_node.size(); ++node)
       if (held_node[node]) held_nodes.push_back(static_cast<int>(node));
+    // Only a phase whose points take the wall's velocity reads the projectors (the water's
+    // points keep FLIP's increment at walls: nodes_to_points).
+    held.clear();
+    if (!wall_velocity_to_points) return;
     held.assign(held_nodes.size(), Matrix::Zero());
     for (const NodalConstraint<dim>* c : constraints)
       for (std::size_t k = 0; k < c->nodes.size(); ++k) {
@@ -178,7 +183,7 @@ struct Phase {
   }
   std::size_t bytes() const {
     return points.bytes() + shape.size() * sizeof(Shape) +
-           held.size() * (sizeof(Eigen::Matrix<double, dim, dim>) + sizeof(int)) +
+           held.size() * sizeof(Eigen::Matrix<double, dim, dim>) + held_nodes.size() * sizeof(int) +
            node_velocity.size() *
                (2 * sizeof(Vec) + sizeof(char) + nodal.threads() * Sums::kBytesPerNode);
   }
