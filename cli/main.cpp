@@ -62,7 +62,7 @@ usage:
   lituya sweep  SWEEP.toml [--measure M,...] [-o DIR] [--jobs N] [--threads N]
                 [--force | --resume] [--dry-run] [--no-reuse]
                                                    the same, defined in a sweep file
-  lituya sweep  DIR [--merge DIR2 ...] [--sizes H1,H2,H3] [-o FILE.csv] [--force]
+  lituya sweep  DIR [--merge DIR2 ...] [--sizes H1,H2,H3] [-o DIR3] [--force]
                                                    report finished sweeps again, their mesh
                                                    convergence from the sizes chosen
   lituya COMMAND --help                            the command's usage and options
@@ -106,8 +106,9 @@ Given the folder DIR of a finished sweep instead, nothing is run: its runs, thei
 spread and its mesh convergence are reported again from DIR/sweep.json. --merge DIR2 adds
 the runs of another sweep of the same keys (a finer size run on its own, say; repeatable);
 the measures all of them have are reported. --sizes H1,H2,H3 makes the Richardson estimate
-from those three cell sizes instead of the three finest. -o FILE.csv also writes the mesh
-convergence table there (the columns of a sweep's convergence.csv).)";
+from those three cell sizes instead of the three finest. -o DIR3 also writes the merged
+runs, repeats and mesh convergence there in a sweep's own tables, and for a sweep of the
+cell size alone each measure against the cell size (convergence_<measure>.png).)";
 
 const std::vector<std::string> kCommands = {"pre", "solve", "post", "run", "verify", "sweep"};
 
@@ -302,7 +303,7 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
                      "       lituya sweep SWEEP.toml [--measure M,...] [-o DIR] [--jobs N] "
                      "[--threads N] [--force | --resume]\n              [--dry-run] [--no-reuse] "
                      "[--repeats N]\n"
-                     "       lituya sweep DIR [--merge DIR2 ...] [--sizes H1,H2,H3] [-o FILE.csv] "
+                     "       lituya sweep DIR [--merge DIR2 ...] [--sizes H1,H2,H3] [-o DIR3] "
                      "[--force]",
                      std::string("Run the scene once per value of KEY, or per combination of the "
                                  "values of several\nKEYs (pre + solve + post), then tabulate and "
@@ -335,7 +336,7 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
         "three finest)");
     output(c.options,
            "the sweep folder (default: sweep_<KEY>/ next to the scene file); with a sweep "
-           "folder: a file for the mesh convergence table");
+           "folder: a folder for the merged tables and the convergence plots");
     threads_option(c.options);
     force(c.options, "write into a sweep folder that already holds files and run every run again");
     common(c.options);
@@ -618,19 +619,19 @@ int report_sweeps(const Options& o) {
       throw UsageError("sweep",
                        "--sizes takes three distinct cell sizes, H1,H2,H3 (got '" + o.sizes + "')");
   }
-  if (!o.output.empty() && fs::exists(o.output) && !o.force)
-    throw UsageError("sweep", o.output + " exists: give --force to overwrite it");
   std::vector<fs::path> folders{o.input};
   folders.insert(folders.end(), o.merge.begin(), o.merge.end());
   const lituya::sweep::MergedSweep merged = lituya::sweep::merge_sweeps(folders);
   std::vector<lituya::sweep::MeshConvergenceRow> convergence;
   std::cout << lituya::sweep::format_report(merged, sizes, &convergence);
   if (!o.output.empty()) {
-    if (convergence.empty())
-      throw UsageError("sweep", "no mesh convergence to write to " + o.output +
-                                    " (the sweeps need three cell sizes that finished)");
-    lituya::sweep::write_convergence_table(o.output, convergence);
-    std::cout << "mesh convergence: " << o.output << "\n";
+    const lituya::sweep::ReportFiles files =
+        lituya::sweep::write_report(o.output, merged, convergence, o.force);
+    std::cout << "table: " << files.runs.string() << "\n";
+    if (!files.repeats.empty()) std::cout << "repeats: " << files.repeats.string() << "\n";
+    if (!files.convergence.empty())
+      std::cout << "mesh convergence: " << files.convergence.string() << "\n";
+    for (const fs::path& plot : files.plots) std::cout << "plot: " << plot.string() << "\n";
   }
   return 0;
 }

@@ -19,10 +19,6 @@ namespace lituya::sweep {
 namespace {
 
 constexpr const char* kCellSizeKey = "mesh.cell_size";
-// Above this observed order the three values are not in the asymptotic range of a scheme
-// with linear shape functions (formal order at most 2): they level off by chance, or the
-// coarsest is too coarse.
-constexpr double kHighestPlausibleOrder = 3.0;
 
 // The observed order: the p > 0 with g(p) = e32 / e21, g(p) = r21^p (r32^p - 1) / (r21^p - 1),
 // which is Celik et al. (2008) eq. (3), p ln r21 = ln(e32 / e21) + ln((r21^p - 1) / (r32^p - 1)),

@@ -2,14 +2,19 @@
 #include "lituya/sweep/report.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
 #include "lituya/common/csv_writer.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/json_file.hpp"
+#include "lituya/common/output_folder.hpp"
+#include "lituya/post/plot.hpp"
+#include "lituya/sweep/measures.hpp"
 #include "lituya/sweep/progress.hpp"
 #include "lituya/sweep/repeats.hpp"
 #include "lituya/sweep/scene_edit.hpp"
@@ -77,8 +82,13 @@ SweepResult read_sweep_summary(const fs::path& folder) {
       run.number = r.at("number").get<int>();
       run.folder = folder / r.at("folder").get<std::string>();
       const Json& values = r.at("values");
-      for (const std::string& key : result.parameters)
-        run.values.push_back(value_text(values.at(key)));
+      for (const std::string& key : result.parameters) {
+        const Json& value = values.at(key);
+        run.values.push_back(value_text(value));
+        // As the scene copy had it (sweep.csv shows strings without these quotes).
+        run.literals.push_back(value.is_string() ? "\"" + run.values.back() + "\""
+                                                 : run.values.back());
+      }
       run.status = status_from_text(r.at("status").get<std::string>());
       run.kept = r.value("kept", false);
       const Json& wall = r.at("wall_time");
@@ -181,6 +191,97 @@ std::string format_report(const MergedSweep& merged, const std::vector<double>& 
       << format_convergence(rows, /*chosen_sizes=*/!cell_sizes.empty());
   if (convergence) *convergence = std::move(rows);
   return out.str();
+}
+
+namespace {
+
+// "gauge_first_crest:X1" -> "gauge_first_crest_X1": a measure's name in a file name.
+std::string file_stem(const std::string& measure) {
+  std::string stem = measure;
+  for (char& c : stem)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) c = '_';
+  return stem;
+}
+
+}  // namespace
+
+ReportFiles write_report(const fs::path& folder, const MergedSweep& merged,
+                         const std::vector<MeshConvergenceRow>& convergence, bool overwrite) {
+  const SweepResult& result = merged.result;
+  prepare_output_folder(folder, overwrite);
+  ReportFiles files;
+  files.runs = folder / "sweep.csv";
+  write_run_table(files.runs, result);
+  if (result.repeat_parameter >= 0) {
+    files.repeats = folder / "repeats.csv";
+    write_repeat_table(files.repeats, repeat_summary(result));
+  }
+  if (convergence.empty()) return files;
+  files.convergence = folder / "convergence.csv";
+  write_convergence_table(files.convergence, convergence);
+
+  // The plots: each measure against the cell size, for a study of the cell size alone (with
+  // or without repeats); with other keys the runs of several groups would share one curve.
+  const auto cell_key =
+      std::find(result.parameters.begin(), result.parameters.end(), "mesh.cell_size");
+  const size_t keys = result.parameters.size() - (result.repeat_parameter >= 0 ? 1 : 0);
+  if (keys != 1 || cell_key == result.parameters.end()) return files;
+  const size_t cell = static_cast<size_t>(cell_key - result.parameters.begin());
+  // convergence_means.csv: per cell size, each measure's mean over its finished runs, and a
+  // row at h = 0 with the Richardson extrapolation where the estimate has one of a plausible
+  // order (an "order" of 7 is a levelling off, and a point at h = 0 would read as a limit).
+  std::map<double, std::vector<std::vector<double>>> by_size;  // h -> measure -> values
+  for (const RunRecord& run : result.runs) {
+    if (run.status != RunStatus::kOk) continue;
+    double h = NAN;
+    try {
+      h = std::stod(run.values[cell]);
+    } catch (const std::exception&) {
+      continue;
+    }
+    auto& values = by_size[h];
+    values.resize(result.measures.size());
+    for (size_t m = 0; m < result.measures.size(); ++m)
+      if (std::isfinite(run.measures[m])) values[m].push_back(run.measures[m]);
+  }
+  std::vector<std::string> header{"cell_size_m"};
+  for (const std::string& m : result.measures) header.push_back(m);
+  for (const std::string& m : result.measures) header.push_back("extrapolated:" + m);
+  CsvWriter means(header);
+  means.number(0.0);
+  for (size_t m = 0; m < result.measures.size(); ++m) means.number(NAN);
+  for (const std::string& m : result.measures) {
+    double limit = NAN;
+    for (const MeshConvergenceRow& row : convergence)
+      if (row.measure == m && !(row.estimate.order > kHighestPlausibleOrder))
+        limit = row.estimate.extrapolated;
+    means.number(limit);
+  }
+  means.end_row();
+  for (const auto& [h, values] : by_size) {
+    means.number(h);
+    for (const std::vector<double>& v : values) means.number(spread_of(v).mean);
+    for (size_t m = 0; m < result.measures.size(); ++m) means.number(NAN);
+    means.end_row();
+  }
+  files.means = folder / "convergence_means.csv";
+  means.write(files.means);
+  const int runs_x = 2 + static_cast<int>(cell);
+  const int first_measure = 2 + static_cast<int>(result.parameters.size());
+  for (size_t m = 0; m < result.measures.size(); ++m) {
+    const std::string& name = result.measures[m];
+    const int measure_column = 2 + static_cast<int>(m);
+    const std::vector<post::PlotSeries> series{
+        {files.runs, runs_x, first_measure + static_cast<int>(m), "each run", true, 0, 0, 1},
+        {files.means, 1, measure_column, "mean of the runs of a size", false, 0, 0, 2},
+        {files.means, 1, measure_column + static_cast<int>(result.measures.size()),
+         "Richardson extrapolation (monotone, order at most 3)", true, 0, 0, 3}};
+    const fs::path png = folder / ("convergence_" + file_stem(name) + ".png");
+    if (post::plot_xy(png, name + " against the cell size", "cell size (m)",
+                      name + " (" + measure_unit(name) + ")", series))
+      files.plots.push_back(png);
+  }
+  return files;
 }
 
 }  // namespace lituya::sweep

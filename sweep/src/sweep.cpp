@@ -141,8 +141,9 @@ std::string run_message(const RunRecord& run) {
   return run.kept ? kKeptMessage : run.message;
 }
 
-// sweep.csv: the runs of `result` (those done so far while the sweep goes on).
-void write_table(const fs::path& file, const SweepResult& result) {
+}  // namespace
+
+void write_run_table(const fs::path& file, const SweepResult& result) {
   std::vector<std::string> header{"run"};
   header.insert(header.end(), result.parameters.begin(), result.parameters.end());
   header.insert(header.end(), result.measures.begin(), result.measures.end());
@@ -157,6 +158,8 @@ void write_table(const fs::path& file, const SweepResult& result) {
   }
   table.write(file);
 }
+
+namespace {
 
 // sweep.json: the sweep and every run, machine-readable, each number as the run gave it.
 void write_summary(const SweepResult& result, const SweepDefinition& definition,
@@ -952,7 +955,7 @@ SweepResult run_sweep(const SweepDefinition& user_definition, const SweepOptions
         written.runs.begin(), written.runs.end(), run,
         [](const RunRecord& a, const RunRecord& b) { return a.number < b.number; });
     written.runs.insert(at, run);
-    write_table(result.table, written);
+    write_run_table(result.table, written);
   };
 
   // The runs to make: invalid copies and kept runs are recorded at once.

@@ -11,6 +11,7 @@
 
 #include "lituya/common/input_error.hpp"
 #include "lituya/common/json_file.hpp"
+#include "lituya/post/plot.hpp"
 
 namespace {
 
@@ -144,6 +145,50 @@ TEST(SweepReport, MergesSweepsAndEstimatesFromTheChosenSizes) {
   EXPECT_NEAR(chosen[0].estimate.order, 2.0, 1e-6);
   EXPECT_NEAR(chosen[0].estimate.extrapolated, 1.0, 1e-9);
   EXPECT_NE(chosen_text.find("the three chosen"), std::string::npos);
+  fs::remove_all(folder);
+}
+
+// The report's folder: the merged runs in sweep.csv's columns, the means per size with the
+// extrapolation at h = 0 (order 2, limit 1, from the power law of `repeated`), one plot a
+// measure when gnuplot is there, and no second write into it without `overwrite`.
+TEST(SweepReport, WritesTheMergedTablesAndTheConvergencePlots) {
+  const fs::path folder = test_folder("write");
+  const std::string m = "gauge_first_crest:X1";
+  write_sweep(folder / "coarse", repeated({0.04, 0.02}, m), {m});
+  write_sweep(folder / "fine", repeated({0.01}, m), {m});
+  const MergedSweep merged = merge_sweeps({folder / "coarse", folder / "fine"});
+  std::vector<MeshConvergenceRow> rows;
+  format_report(merged, {}, &rows);
+  const ReportFiles files = write_report(folder / "report", merged, rows, false);
+
+  std::ifstream runs(files.runs);
+  std::string header, line;
+  std::getline(runs, header);
+  EXPECT_EQ(header,
+            "run,mesh.cell_size,stage.release.courant," + m + ",wall_time_s,status,message");
+  int rows_read = 0;
+  while (std::getline(runs, line)) ++rows_read;
+  EXPECT_EQ(rows_read, 6);
+  EXPECT_FALSE(files.repeats.empty());
+  ASSERT_FALSE(files.convergence.empty());
+
+  // cell_size_m, the mean, the extrapolation: first the row at h = 0, then the sizes.
+  std::ifstream means(files.means);
+  std::getline(means, header);
+  EXPECT_EQ(header, "cell_size_m," + m + ",extrapolated:" + m);
+  std::getline(means, line);
+  EXPECT_EQ(line.substr(0, 3), "0,,");
+  EXPECT_NEAR(std::stod(line.substr(3)), 1.0, 1e-9);
+  std::getline(means, line);
+  EXPECT_EQ(line.substr(0, 5), "0.01,");
+  EXPECT_NEAR(std::stod(line.substr(5)), exact(0.01), 1e-12);  // the two repeats' mean
+  EXPECT_EQ(files.plots.size(), lituya::post::gnuplot_available() ? 1u : 0u);
+  if (!files.plots.empty()) {
+    EXPECT_EQ(files.plots[0].filename(), "convergence_gauge_first_crest_X1.png");
+  }
+
+  EXPECT_THROW(write_report(folder / "report", merged, rows, false), lituya::InputError);
+  EXPECT_NO_THROW(write_report(folder / "report", merged, rows, true));
   fs::remove_all(folder);
 }
 

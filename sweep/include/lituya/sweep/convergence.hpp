@@ -36,6 +36,12 @@ namespace lituya::sweep {
 
 struct SweepResult;
 
+// Above this observed order the three values are not in the asymptotic range of a scheme
+// with linear shape functions (formal order at most 2): they level off by chance, or the
+// coarsest is too coarse. The estimate's note says so, and the report's plots leave such an
+// extrapolation out.
+inline constexpr double kHighestPlausibleOrder = 3.0;
+
 enum class ConvergenceBehaviour { kUnchanged, kMonotone, kOscillatory, kNotConverging };
 // "unchanged", "monotone", "oscillatory", "not converging"
 std::string behaviour_text(ConvergenceBehaviour behaviour);

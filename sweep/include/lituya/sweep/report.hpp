@@ -48,4 +48,21 @@ MergedSweep merge_sweeps(const std::vector<std::filesystem::path>& folders);
 std::string format_report(const MergedSweep& merged, const std::vector<double>& cell_sizes,
                           std::vector<MeshConvergenceRow>* convergence = nullptr);
 
+// What write_report() wrote; a path is empty when the file was not written.
+struct ReportFiles {
+  std::filesystem::path runs;         // sweep.csv: the merged runs
+  std::filesystem::path repeats;      // repeats.csv (sweeps with repeats)
+  std::filesystem::path convergence;  // convergence.csv (at least three cell sizes)
+  std::filesystem::path means;        // convergence_means.csv (a sweep of the cell size alone)
+  std::vector<std::filesystem::path> plots;  // convergence_<measure>.png (when gnuplot runs)
+};
+
+// The report's tables in `folder` (created; InputError when it holds files, unless
+// `overwrite`): sweep.csv, repeats.csv and convergence.csv in a sweep's own columns, and, for
+// a sweep of the cell size alone, each measure against the cell size: every run, the mean of
+// each size and the Richardson extrapolation at h = 0 (convergence_means.csv and one PNG a
+// measure, convergence_<measure>.png with ':' made '_').
+ReportFiles write_report(const std::filesystem::path& folder, const MergedSweep& merged,
+                         const std::vector<MeshConvergenceRow>& convergence, bool overwrite);
+
 }  // namespace lituya::sweep

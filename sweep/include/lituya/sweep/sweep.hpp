@@ -110,6 +110,10 @@ SweepResult run_sweep(const SweepDefinition& definition, const SweepOptions& opt
 // replaced by '_' and cut to 40 characters. Several values are joined by '_'.
 std::string run_folder_name(int number, int count, const std::string& value);
 
+// DIR/sweep.csv: one row per run of `result` (those done so far while a sweep goes on): run,
+// every key, the measures, wall_time_s, status, message (file-formats manual).
+void write_run_table(const std::filesystem::path& file, const SweepResult& result);
+
 // The table printed at the end: one row per run, then the messages of the failed runs.
 std::string format_table(const SweepResult& result);
 
