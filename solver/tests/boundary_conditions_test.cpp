@@ -139,10 +139,13 @@ TEST(BoundaryConditions, SaturatedContactTakesFrictionFromTheSkeletonAndLetsItLi
 
 // What a node's conditions hold, for the grains' velocity at walls (phase.hpp,
 // nodes_to_points): a roller or a contact wall holds its normal, a node on both (a corner)
-// the span of both normals (here every component), a node of no condition nothing.
+// the span of both normals (here every component), a node of no condition nothing. A phase
+// whose points keep FLIP's increment at walls (the water) marks its held nodes but builds no
+// projectors.
 TEST(HeldComponents, WallsHoldTheirNormalsAndCornersTheirSpan) {
   using Vec = Eigen::Vector2d;
   detail::Phase<2, MaterialPoints<2>, detail::PhaseSums<2>> phase;
+  phase.wall_velocity_to_points = true;
   phase.allocate_nodes(1, 3);
   NodalConstraint<2> bed, wall;
   bed.type = BoundaryType::kContact;
@@ -158,6 +161,11 @@ TEST(HeldComponents, WallsHoldTheirNormalsAndCornersTheirSpan) {
   const Eigen::Matrix2d normal_only = Vec(0, 1) * Vec(0, 1).transpose();
   EXPECT_LT((phase.held_components(1) - normal_only).norm(), 1e-12);
   EXPECT_LT((phase.held_components(2) - Eigen::Matrix2d::Identity()).norm(), 1e-12);
+
+  phase.wall_velocity_to_points = false;
+  phase.hold_nodes();
+  EXPECT_TRUE(phase.is_held(1) && phase.is_held(2));
+  EXPECT_TRUE(phase.held.empty());
 }
 
 }  // namespace
