@@ -18,8 +18,6 @@ namespace lituya::sweep {
 
 namespace {
 
-constexpr const char* kCellSizeKey = "mesh.cell_size";
-
 // The observed order: the p > 0 with g(p) = e32 / e21, g(p) = r21^p (r32^p - 1) / (r21^p - 1),
 // which is Celik et al. (2008) eq. (3), p ln r21 = ln(e32 / e21) + ln((r21^p - 1) / (r32^p - 1)),
 // without its absolute value. g rises monotonically from ln r32 / ln r21 (p -> 0) without
@@ -58,6 +56,16 @@ std::string gci_percent(double fraction) {
 }
 
 }  // namespace
+
+double run_cell_size(const RunRecord& run, std::size_t cell_key) {
+  try {
+    std::size_t used = 0;
+    const double h = std::stod(run.values[cell_key], &used);
+    return used == run.values[cell_key].size() && h > 0 ? h : NAN;
+  } catch (const std::exception&) {
+    return NAN;
+  }
+}
 
 std::string behaviour_text(ConvergenceBehaviour behaviour) {
   switch (behaviour) {
@@ -169,13 +177,7 @@ std::vector<MeshConvergenceRow> mesh_convergence(const SweepResult& result,
       // whose mean is the value.
       std::map<double, std::vector<const RunRecord*>> by_size;
       for (const RunRecord* run : groups[group]) {
-        double h = NAN;
-        try {
-          std::size_t used = 0;
-          h = std::stod(run->values[cell_key], &used);
-          if (used != run->values[cell_key].size()) h = NAN;
-        } catch (const std::exception&) {
-        }
+        const double h = run_cell_size(*run, cell_key);
         if (!(h > 0) || !chosen(h) || !std::isfinite(run->measures[m])) continue;
         by_size[h].push_back(run);
       }

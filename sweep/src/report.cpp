@@ -43,13 +43,6 @@ std::string join(const std::vector<std::string>& items) {
   return text;
 }
 
-RunStatus status_from_text(const std::string& text) {
-  for (RunStatus s :
-       {RunStatus::kOk, RunStatus::kInputError, RunStatus::kRunStopped, RunStatus::kError})
-    if (status_text(s) == text) return s;
-  return RunStatus::kError;
-}
-
 }  // namespace
 
 SweepResult read_sweep_summary(const fs::path& folder) {
@@ -138,19 +131,18 @@ MergedSweep merge_sweeps(const std::vector<fs::path>& folders) {
     if (keep_all.empty())
       throw InputError(more.summary.string(), 0,
                        "it has no measure in common with " + all.summary.string());
+    const auto keep = [](std::vector<double>& values, const std::vector<size_t>& columns) {
+      std::vector<double> kept;
+      for (size_t m : columns) kept.push_back(values[m]);
+      values = std::move(kept);
+    };
     std::vector<std::string> measures;
     for (size_t m : keep_all) measures.push_back(all.measures[m]);
     all.measures = measures;
-    for (RunRecord& run : all.runs) {
-      std::vector<double> kept;
-      for (size_t m : keep_all) kept.push_back(run.measures[m]);
-      run.measures = kept;
-    }
+    for (RunRecord& run : all.runs) keep(run.measures, keep_all);
     RunSource source{folders[f], last + 1, last};
     for (RunRecord& run : more.runs) {
-      std::vector<double> kept;
-      for (size_t m : keep_more) kept.push_back(run.measures[m]);
-      run.measures = kept;
+      keep(run.measures, keep_more);
       run.number = ++last;
       all.runs.push_back(std::move(run));
     }
@@ -165,9 +157,7 @@ std::string format_report(const MergedSweep& merged, const std::vector<double>& 
   const SweepResult& result = merged.result;
   std::vector<MeshConvergenceRow> rows = mesh_convergence(result, cell_sizes);
   if (!cell_sizes.empty() && rows.empty()) {
-    std::vector<double> sizes;
-    const auto key =
-        std::find(result.parameters.begin(), result.parameters.end(), "mesh.cell_size");
+    const auto key = std::find(result.parameters.begin(), result.parameters.end(), kCellSizeKey);
     if (key == result.parameters.end())
       throw InputError(merged.sources.front().folder.string(), 0,
                        "--sizes needs a sweep over mesh.cell_size; this one varies other keys");
@@ -222,8 +212,7 @@ ReportFiles write_report(const fs::path& folder, const MergedSweep& merged,
 
   // The plots: each measure against the cell size, for a study of the cell size alone (with
   // or without repeats); with other keys the runs of several groups would share one curve.
-  const auto cell_key =
-      std::find(result.parameters.begin(), result.parameters.end(), "mesh.cell_size");
+  const auto cell_key = std::find(result.parameters.begin(), result.parameters.end(), kCellSizeKey);
   const size_t keys = result.parameters.size() - (result.repeat_parameter >= 0 ? 1 : 0);
   if (keys != 1 || cell_key == result.parameters.end()) return files;
   const size_t cell = static_cast<size_t>(cell_key - result.parameters.begin());
@@ -232,13 +221,8 @@ ReportFiles write_report(const fs::path& folder, const MergedSweep& merged,
   // order (an "order" of 7 is a levelling off, and a point at h = 0 would read as a limit).
   std::map<double, std::vector<std::vector<double>>> by_size;  // h -> measure -> values
   for (const RunRecord& run : result.runs) {
-    if (run.status != RunStatus::kOk) continue;
-    double h = NAN;
-    try {
-      h = std::stod(run.values[cell]);
-    } catch (const std::exception&) {
-      continue;
-    }
+    const double h = run_cell_size(run, cell);
+    if (run.status != RunStatus::kOk || !std::isfinite(h)) continue;
     auto& values = by_size[h];
     values.resize(result.measures.size());
     for (size_t m = 0; m < result.measures.size(); ++m)

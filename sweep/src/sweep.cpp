@@ -257,10 +257,7 @@ bool read_run_file(RunRecord& run, const std::vector<std::string>& measure_names
     if (j.at("number").get<int>() != run.number ||
         j.at("values").get<std::vector<std::string>>() != run.values)
       return false;
-    const std::string status = j.at("status").get<std::string>();
-    for (RunStatus s :
-         {RunStatus::kOk, RunStatus::kInputError, RunStatus::kRunStopped, RunStatus::kError})
-      if (status_text(s) == status) run.status = s;
+    run.status = status_from_text(j.at("status").get<std::string>());
     run.message = j.at("message").get<std::string>();
     const Json& wall = j.at("wall_time");
     run.wall_time = wall.is_number() ? wall.get<double>() : NAN;
@@ -762,6 +759,13 @@ std::string status_text(RunStatus status) {
       return "error";
   }
   return "error";
+}
+
+RunStatus status_from_text(const std::string& text) {
+  for (RunStatus s :
+       {RunStatus::kOk, RunStatus::kInputError, RunStatus::kRunStopped, RunStatus::kError})
+    if (status_text(s) == text) return s;
+  return RunStatus::kError;
 }
 
 std::string RunRecord::label(const std::vector<std::string>& labels) const {

@@ -26,6 +26,7 @@
 // An order far above the scheme's own (linear shape functions: at most 2) means the values are
 // not yet in the asymptotic range (or are levelling off by chance); the note says so.
 #include <array>
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -35,12 +36,18 @@
 namespace lituya::sweep {
 
 struct SweepResult;
+struct RunRecord;
 
 // Above this observed order the three values are not in the asymptotic range of a scheme
 // with linear shape functions (formal order at most 2): they level off by chance, or the
 // coarsest is too coarse. The estimate's note says so, and the report's plots leave such an
 // extrapolation out.
 inline constexpr double kHighestPlausibleOrder = 3.0;
+
+// The sweep key of the cell size, and a run's value of it: NaN unless the whole text is a
+// positive number.
+inline constexpr const char* kCellSizeKey = "mesh.cell_size";
+double run_cell_size(const RunRecord& run, std::size_t cell_key);
 
 enum class ConvergenceBehaviour { kUnchanged, kMonotone, kOscillatory, kNotConverging };
 // "unchanged", "monotone", "oscillatory", "not converging"

@@ -61,6 +61,8 @@ struct SweepOptions {
 enum class RunStatus { kOk, kInputError, kRunStopped, kError };
 // "ok", "input error", "run stopped", "error" (the status column of sweep.csv).
 std::string status_text(RunStatus status);
+// The status a status_text names; kError for any other text.
+RunStatus status_from_text(const std::string& text);
 
 struct RunRecord {
   int number = 0;                     // from 1, in run order
