@@ -5,8 +5,9 @@
 // and liquid points both count as points).
 //
 //   lituya_benchmark [--dim 2|3] [--segments 5] [--steps 50] [--threads 1] [--cell 0.005]
-//                    [--water 0|1] [--nodal-fit 0|1]
-// --nodal-fit 1 runs the water with [solver] liquid_pressure = "nodal_fit".
+//                    [--water 0|1] [--nodal-fit 0|1] [--landing 1|0]
+// --nodal-fit 1 runs the water with [solver] liquid_pressure = "nodal_fit"; --landing 0 with
+// liquid_landing = "keep_velocity" (no search for water in free flight; the cost of that search).
 #include <omp.h>
 
 #include <algorithm>
@@ -39,7 +40,8 @@ Material sand() {
 }
 
 template <int dim>
-void run(int segments, int steps, int threads, double cell, bool with_water, bool nodal_fit) {
+void run(int segments, int steps, int threads, double cell, bool with_water, bool nodal_fit,
+         bool landing) {
   const std::size_t memory_before = lituya::current_memory_bytes();
   BoxScene<dim> scene;
   using Vec = Eigen::Matrix<double, dim, 1>;
@@ -59,6 +61,7 @@ void run(int segments, int steps, int threads, double cell, bool with_water, boo
     scene.with_water = true;
     scene.water = paper_water();
     if (nodal_fit) scene.solver.liquid_pressure = LiquidPressure::kNodalFit;
+    if (!landing) scene.solver.liquid_landing = LiquidLanding::kKeepVelocity;
     scene.water_min = Vec::Zero();
     scene.water_max = scene.domain_size;
     scene.water_max(1) = 0.3;
@@ -105,8 +108,8 @@ void run(int segments, int steps, int threads, double cell, bool with_water, boo
 int main(int argc, char** argv) {
   const char* usage =
       "usage: lituya_benchmark [--dim 2|3] [--segments 5] [--steps 50] [--threads 1]\n"
-      "                        [--cell 0.005] [--water 0|1] [--nodal-fit 0|1]\n";
-  int dim = 2, segments = 5, steps = 50, threads = 1, water = 0, nodal_fit = 0;
+      "                        [--cell 0.005] [--water 0|1] [--nodal-fit 0|1] [--landing 1|0]\n";
+  int dim = 2, segments = 5, steps = 50, threads = 1, water = 0, nodal_fit = 0, landing = 1;
   double cell = -1;
   for (int i = 1; i < argc; i += 2) {
     if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
@@ -115,8 +118,8 @@ int main(int argc, char** argv) {
     }
     // Every option takes a value: a lone or unknown flag is a usage error, not a run.
     bool known = false;
-    for (const char* name :
-         {"--dim", "--segments", "--steps", "--threads", "--water", "--cell", "--nodal-fit"})
+    for (const char* name : {"--dim", "--segments", "--steps", "--threads", "--water", "--cell",
+                             "--nodal-fit", "--landing"})
       known = known || !std::strcmp(argv[i], name);
     if (!known) {
       std::fprintf(stderr, "unknown option %s\n%s", argv[i], usage);
@@ -138,12 +141,16 @@ int main(int argc, char** argv) {
       water = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--nodal-fit"))
       nodal_fit = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--landing"))
+      landing = std::atoi(argv[i + 1]);
     else
       cell = std::atof(argv[i + 1]);
   }
   if (dim == 2)
-    run<2>(segments, steps, threads, cell > 0 ? cell : 0.005, water != 0, nodal_fit != 0);
+    run<2>(segments, steps, threads, cell > 0 ? cell : 0.005, water != 0, nodal_fit != 0,
+           landing != 0);
   else
-    run<3>(segments, steps, threads, cell > 0 ? cell : 0.02, water != 0, nodal_fit != 0);
+    run<3>(segments, steps, threads, cell > 0 ? cell : 0.02, water != 0, nodal_fit != 0,
+           landing != 0);
   return 0;
 }

@@ -216,6 +216,9 @@ SolverSettings read_solver_settings(const TomlTable& t) {
   s.liquid_advection = t.choice_or("liquid_advection", {"velocity", "flux"}, "velocity") == "flux"
                            ? LiquidAdvection::kFlux
                            : LiquidAdvection::kVelocity;
+  s.liquid_landing = t.choice_or("liquid_landing", {"merge", "keep_velocity"}, "merge") == "merge"
+                         ? LiquidLanding::kMerge
+                         : LiquidLanding::kKeepVelocity;
   s.liquid_bulk_viscosity =
       t.number_in_or("liquid_bulk_viscosity", 0.0, 1.0, s.liquid_bulk_viscosity);
   // Fractions of a minute are allowed: tests checkpoint a run of seconds.
@@ -432,6 +435,7 @@ toml::table to_toml(const SolverSettings& s) {
   if (s.pore_pressure_cell_measure == PorePressureMeasure::kWater)
     t.insert("pore_pressure_cell_measure", "water");
   if (s.liquid_advection == LiquidAdvection::kFlux) t.insert("liquid_advection", "flux");
+  if (s.liquid_landing == LiquidLanding::kKeepVelocity) t.insert("liquid_landing", "keep_velocity");
   return t;
 }
 

@@ -315,6 +315,7 @@ struct CheckpointAccess {
     visit("liquid.pressure", s.water_.points.pressure, n_liquid);
     visit("liquid.viscous_stress", s.water_.points.viscous_stress, n_liquid);
     visit("liquid.porosity", s.water_.points.porosity, n_liquid);
+    visit("liquid.in_flight", s.water_.points.in_flight, n_liquid);
     visit("liquid.shape", s.water_.shape, n_liquid);
     visit("liquid.node_velocity", s.water_.node_velocity, n_nodes);
     // The drag's relative velocity is the pore water's (two_phase.cpp); the mean is what

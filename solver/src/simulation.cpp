@@ -387,6 +387,7 @@ void Simulation<dim>::step(double dt, double damping) {
                                              pore_water_acceleration_.data()};
     nodes_to_points(water_, mesh_, dt, threads_,
                     [&](std::size_t q) { return liquid_in_soil_[q] ? pore_water : free_water; });
+    if (description_.solver.liquid_landing == LiquidLanding::kMerge) merge_landed_liquid();
     if (description_.solver.liquid_advection == LiquidAdvection::kFlux) advect_liquid_by_flux(dt);
   }
   if (musl_) remap_momentum();
@@ -472,7 +473,11 @@ std::size_t Simulation<dim>::storage_bytes() const {
                  (3 * sizeof(double) + 2 * sizeof(Vec)) +
              nodes * (2 * sizeof(double) + 4 * sizeof(Vec)) +  // + pore water and mean fields
              mesh_.cell_count() + water_.points.size() +       // the pore water flags
-             mesh_.cell_count() * sizeof(double) + nodes;      // the pore pressure's cell scale
+             mesh_.cell_count() * sizeof(double) + nodes +     // the pore pressure's cell scale
+             // the landing of spray: a flag per cell; per node the bodies' roots, their
+             // resting flags, the water met and the impulse handed back
+             mesh_.cell_count() +
+             nodes * (sizeof(int) + 2 * sizeof(char) + 2 * sizeof(Vec) + sizeof(double));
   if (nodal_pressure_)  // the fit's moments and force per thread, its nodal coefficients
     bytes += static_cast<std::size_t>(pressure_fit_.threads()) * nodes *
                  (3 * sizeof(Vec) + sizeof(Eigen::Matrix<double, dim, dim>)) +

@@ -263,9 +263,14 @@ std::vector<StageReport> run(const CaseDescription& description, const SolveOpti
       records->begin_stage(
           as_run(stage), run_time_at_stage_start(reports),
           within ? std::optional<double>(start.header.within_stage->time) : std::nullopt);
+      const long landed_before = simulation.landed_point_count();
       reports.push_back(simulation.run_stage(as_run(stage), on_output, after_step,
                                              within ? &*start.header.within_stage : nullptr));
       note(describe(reports.back(), n_points));
+      if (const long landed = simulation.landed_point_count() - landed_before; landed > 0)
+        note("stage '" + stage.name + "': " + std::to_string(landed) +
+             " landings of liquid points from free flight, merged into the water they met "
+             "([solver] liquid_landing)");
       checkpoint(end_of_stage_checkpoint(output_folder, stage.name),
                  "end of stage '" + stage.name + "'", current + 1, std::nullopt);
       fs::remove(within_stage_checkpoint(output_folder));

@@ -359,6 +359,14 @@ TEST(CaseDescription, LiquidAdvectionIsVelocityOrFlux) {
             LiquidAdvection::kFlux);
 }
 
+TEST(CaseDescription, LiquidLandingIsMergeOrKeepVelocity) {
+  EXPECT_EQ(SolverSettings{}.liquid_landing, LiquidLanding::kMerge);
+  SolverSettings s;
+  s.liquid_landing = LiquidLanding::kKeepVelocity;
+  EXPECT_EQ(check_solver_choice("liquid_landing", "bounce", s).liquid_landing,
+            LiquidLanding::kKeepVelocity);
+}
+
 // stages.toml and materials.toml can be edited by hand between `lituya pre` and `lituya
 // solve`: the case loader applies the same checks as the scene reader, so a stage name that
 // cannot make a file name or a non-finite gravity stops at its line, before any output.

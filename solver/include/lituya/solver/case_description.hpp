@@ -117,6 +117,7 @@ enum class PorePressureMeasure { kSoil, kWater };
 //   centimetre (1.24 of its pores in the seepage column) and left the one below under-filled
 //   (December 2026, stop 32).
 enum class LiquidAdvection { kVelocity, kFlux };
+enum class LiquidLanding { kMerge, kKeepVelocity };
 
 struct SolverSettings {
   TransferScheme scheme = TransferScheme::kMUSL;
@@ -159,6 +160,13 @@ struct SolverSettings {
   // back the points' own volumes, under which water in motion settles.
   bool free_water_cell_volume = true;
   LiquidAdvection liquid_advection = LiquidAdvection::kVelocity;
+  // Water in free flight (spray, a sheet off a crest; water_in_flight.hpp) that lands on a
+  // body of water: kMerge gives each landing point the velocity of the water it lands in and
+  // hands its excess momentum to the nodes there (liquid_landing.cpp; scientific manual
+  // 10.4), an inelastic impact. kKeepVelocity is FLIP's own behaviour: the point keeps its
+  // velocity relative to the water and is deflected by the pressure, elastically (before
+  // December 2026, stop 51).
+  LiquidLanding liquid_landing = LiquidLanding::kMerge;
   // Artificial bulk viscosity of the water (scientific manual 10.5; not in the paper): a
   // viscous pressure -zeta div(v) with zeta = liquid_bulk_viscosity * rho_w c_w h. It acts only
   // on compression, so it damps the sound waves of the weakly compressible water (an artefact

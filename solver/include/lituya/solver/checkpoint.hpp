@@ -29,7 +29,7 @@
 
 namespace lituya::solver {
 
-inline constexpr std::uint32_t kCheckpointFormatVersion = 4;
+inline constexpr std::uint32_t kCheckpointFormatVersion = 5;
 // The folder, under the output folder, that holds a run's checkpoints.
 inline constexpr const char* kCheckpointFolder = "checkpoints";
 

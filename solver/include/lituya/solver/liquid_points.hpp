@@ -22,15 +22,20 @@ struct LiquidPoints : PointSet<dim> {
   std::vector<double> pressure;        // Pa, compression positive, >= 0 (no tension)
   std::vector<Voigt6> viscous_stress;  // Pa, mu (grad v + grad v^T), eq. (17)
   std::vector<double> porosity;        // n seen by the point (1 in free water)
+  // 1 while the point's body of water rests on nothing (water_in_flight.hpp): spray. A point
+  // whose flag goes from 1 to 0 has landed (liquid_landing.cpp).
+  std::vector<char> in_flight;
 
   void resize(std::size_t n) {
     this->resize_common(n);
     pressure.resize(n, 0.0);
     viscous_stress.resize(n, Voigt6::Zero());
     porosity.resize(n, 1.0);
+    in_flight.resize(n, 0);
   }
   std::size_t bytes() const {
-    return this->size() * (this->kCommonBytesPerPoint + 2 * sizeof(double) + sizeof(Voigt6));
+    return this->size() *
+           (this->kCommonBytesPerPoint + 2 * sizeof(double) + sizeof(Voigt6) + sizeof(char));
   }
 };
 

@@ -36,6 +36,7 @@
 #include "lituya/solver/nodal_scatter.hpp"
 #include "lituya/solver/phase.hpp"
 #include "lituya/solver/transfer_damping.hpp"
+#include "lituya/solver/water_in_flight.hpp"
 
 namespace lituya::solver {
 
@@ -171,6 +172,9 @@ class Simulation {
   // Moves the sums into `impulses` and starts them afresh; returns the time they cover (the
   // stage history takes them at each of its rows, probe_recorder.cpp).
   double take_wall_impulses(std::vector<WallImpulse>& impulses);
+  // Liquid points that landed after a free flight and were merged since this object was
+  // built (liquid_landing.cpp); a count for tests and diagnostics, not state.
+  long landed_point_count() const { return landed_point_count_; }
   // Total number of points (solid + liquid), for throughput figures.
   std::size_t point_count() const { return solid_.points.size() + water_.points.size(); }
   // Bytes held by points, nodes and mesh (for the memory-per-point report).
@@ -241,6 +245,8 @@ class Simulation {
   void remap_liquid_momentum();
   void update_liquid_and_relocate(double dt);
   void advect_liquid_by_flux(double dt);
+  // Landed spray takes the velocity of the water it lands in (liquid_landing.cpp).
+  void merge_landed_liquid();
   // Pressure-projection stabilisation (pressure_projection.cpp); returns CG iterations.
   int project_liquid_pressure();
   // Pore water volume projection (pore_volume_projection.cpp); returns CG iterations.
@@ -323,7 +329,16 @@ class Simulation {
   std::vector<char> liquid_in_soil_;              // per liquid point: it is pore water
   std::vector<Vec> pore_water_velocity_, pore_water_acceleration_;
   std::vector<Vec> mean_water_velocity_;  // mass-weighted mean of the two (eq. 8's flux)
-  double smallest_cell_height_ = 0;       // of the mesh (a length scale for the surface)
+  // Landing of water in free flight (liquid_landing.cpp): the bodies' finder, the points that
+  // landed this step, the water at their nodes and the momentum they hand
+  // to each node.
+  detail::WaterInFlight<dim> water_in_flight_;
+  std::vector<std::size_t> landed_;
+  std::vector<Vec> landing_impulse_, body_momentum_;
+  std::vector<double> body_mass_;
+  std::vector<char> landing_node_;
+  long landed_point_count_ = 0;
+  double smallest_cell_height_ = 0;  // of the mesh (a length scale for the surface)
   // Per contact-wall node, dt (1 - n) W / m_s: the velocity the wall's reaction to the grains'
   // share of the pore pressure gives them (W: the wall part of the nodal pore-pressure force).
   std::vector<Vec> node_wall_pore_pressure_push_;
