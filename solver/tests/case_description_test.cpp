@@ -351,18 +351,16 @@ TEST(CaseDescription, FreeWaterCellVolumeIsOnUnlessSetAndSurvivesTheWrittenCase)
   EXPECT_NE(msg.find("free_water_cell_volume"), std::string::npos) << msg;
 }
 
-TEST(CaseDescription, LiquidAdvectionIsVelocityOrFlux) {
+// Two choices of the water's treatment: each default, and the other value written into a case
+// and read back (a wrong word names its line and key).
+TEST(CaseDescription, LiquidAdvectionIsVelocityOrFluxAndLandingIsMergeOrKeepVelocity) {
   EXPECT_EQ(SolverSettings{}.liquid_advection, LiquidAdvection::kVelocity);
-  SolverSettings s;
-  s.liquid_advection = LiquidAdvection::kFlux;
-  EXPECT_EQ(check_solver_choice("liquid_advection", "darcy", s).liquid_advection,
-            LiquidAdvection::kFlux);
-}
-
-TEST(CaseDescription, LiquidLandingIsMergeOrKeepVelocity) {
   EXPECT_EQ(SolverSettings{}.liquid_landing, LiquidLanding::kMerge);
   SolverSettings s;
+  s.liquid_advection = LiquidAdvection::kFlux;
   s.liquid_landing = LiquidLanding::kKeepVelocity;
+  EXPECT_EQ(check_solver_choice("liquid_advection", "darcy", s).liquid_advection,
+            LiquidAdvection::kFlux);
   EXPECT_EQ(check_solver_choice("liquid_landing", "bounce", s).liquid_landing,
             LiquidLanding::kKeepVelocity);
 }

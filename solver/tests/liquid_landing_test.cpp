@@ -56,13 +56,15 @@ TEST(WaterInFlight, ABodyRestsOnAWallOrOnGrainsAndOtherwiseFlies) {
     finder.find(mesh, cells, held, solid_mass, 1e-14);
     flags = flags_of(cells);
     EXPECT_EQ(flags, (std::vector<char>{0, 0, 1, 1, 0}));
-    // A cell that links the pair down to the pool: all rest.
+    // A chain of cells that links the pair down to the pool (up the column x = 0.61 m, then
+    // along y = 0.11 m): all but the drop at 0.81 m rest.
     std::vector<int> linked = cells;
-    for (double y = 0.11; y < 0.41; y += 0.05) linked.push_back(cell_at(mesh, 0.61, y));
-    for (double x = 0.36; x < 0.61; x += 0.05) linked.push_back(cell_at(mesh, x, 0.11));
+    for (int k = 0; k < 6; ++k) linked.push_back(cell_at(mesh, 0.61, 0.11 + 0.05 * k));
+    for (int k = 0; k < 5; ++k) linked.push_back(cell_at(mesh, 0.36 + 0.05 * k, 0.11));
     finder.find(mesh, linked, held, {}, 1e-14);
     flags = flags_of(linked);
-    EXPECT_EQ(std::count(flags.begin(), flags.end(), 1), 1);  // the drop at 0.81 alone
+    EXPECT_EQ(std::count(flags.begin(), flags.end(), 1), 1);
+    EXPECT_EQ(flags[4], 1);
   }
 }
 
