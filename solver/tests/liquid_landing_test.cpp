@@ -68,34 +68,63 @@ TEST(WaterInFlight, ABodyRestsOnAWallOrOnGrainsAndOtherwiseFlies) {
   }
 }
 
+template <int dim>
 struct LandingRun {
   double momentum_x_before = 0, momentum_x_after = 0, momentum_scale = 0;
   double kinetic_before = 0, kinetic_after = 0;
   long landed = 0;
   int drop_points = 0;
-  bool drop_flew = false;                 // the drop's points were flagged in flight at an output
-  std::vector<double> drop_velocity;      // the drop's mean x velocity at each output
-  std::vector<Eigen::Vector2d> velocity;  // every liquid point's at the end
+  bool drop_flew = false;             // the drop's points were flagged in flight at an output
+  std::vector<double> drop_velocity;  // the drop's mean x velocity at each output
+  std::vector<Eigen::Matrix<double, dim, 1>> velocity;  // every liquid point's at the end
 };
 
 // No gravity, a roller floor (it holds only the vertical): a pool 0.4 m wide and 0.3 m deep
 // stands still, and a drop of its `drop_points` points nearest its top left corner, moved
 // 0.3 m to the left, flies into its side at 1 m/s. Nothing acts on the horizontal momentum but
-// the water itself.
-LandingRun drop_into_pool(LiquidLanding landing, int drop_points, int threads = 1) {
-  BoxScene<2> s = still_water_tank(0.3);
-  s.gravity = {0.0, 0.0};
-  s.water_min = {0.4, 0.0};
-  s.water_max = {0.8, 0.3};
+// the water itself. In 3D the box is 0.1 m deep (2 cubes of tetrahedra), with no side walls
+// (they would hold the drop).
+template <int dim>
+BoxScene<dim> pool_scene() {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  const BoxScene<2> tank = still_water_tank(0.3);
+  BoxScene<dim> s;
+  s.domain_size = Vec::Ones();
+  s.domain_size.template head<2>() = tank.domain_size;
+  s.water_min = Vec::Zero();
+  s.water_min(0) = 0.4;
+  s.water_max = Vec::Zero();
+  s.water_max.template head<2>() = Eigen::Vector2d(0.8, 0.3);
+  s.block_min = Vec::Constant(2.0);  // no soil
+  s.block_max = Vec::Constant(-1.0);
+  if constexpr (dim == 2) {
+    s.cells = tank.cells;
+  } else {
+    s.domain_size(2) = 0.1;
+    s.water_max(2) = 0.1;
+    s.cells = {tank.cells[0], tank.cells[1], 2};
+  }
+  s.material = tank.material;  // the sand, with no points: the drag's grain size is set
+  s.with_water = true;
+  s.water = paper_water();
+  s.gravity.assign(dim, 0.0);
   s.boundaries = {{"y-", box_condition(BoundaryType::kRoller)}};
+  return s;
+}
+
+template <int dim>
+LandingRun<dim> drop_into_pool(LiquidLanding landing, int drop_points, int threads = 1) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  BoxScene<dim> s = pool_scene<dim>();
   s.solver.liquid_landing = landing;
-  Simulation<2> sim = make_box_simulation<2>(s);
+  Simulation<dim> sim = make_box_simulation<dim>(s);
   sim.set_threads(threads);
-  LiquidPoints<2>& water = sim.liquid();
-  LandingRun run;
+  LiquidPoints<dim>& water = sim.liquid();
+  LandingRun<dim> run;
   std::vector<std::size_t> order(water.size());
   std::iota(order.begin(), order.end(), 0);
-  const Eigen::Vector2d corner(0.4, 0.3);
+  Vec corner = Vec::Constant(0.05);  // in 3D, mid-depth
+  corner.template head<2>() = Eigen::Vector2d(0.4, 0.3);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return (water.position[a] - corner).norm() < (water.position[b] - corner).norm();
   });
@@ -105,7 +134,7 @@ LandingRun drop_into_pool(LiquidLanding landing, int drop_points, int threads = 
     water.pressure[q] = 0;  // no gravity: no hydrostatic pressure
     if (in_drop[q]) {
       water.position[q](0) -= 0.3;
-      water.velocity[q] = Eigen::Vector2d(1.0, 0.0);
+      water.velocity[q] = Vec::Unit(0);
     }
   }
   run.drop_points = drop_points;
@@ -161,8 +190,8 @@ LandingRun drop_into_pool(LiquidLanding landing, int drop_points, int threads = 
 // landing within [0, 0.1] m/s at every output (the pool it joined is 380 times its mass: it
 // moves at a few cm/s locally, 0.0026 m/s as a whole).
 TEST(LiquidLanding, ADropSmallerThanACellMergesIntoThePoolWithoutBouncing) {
-  const LandingRun merge = drop_into_pool(LiquidLanding::kMerge, 1);
-  const LandingRun keep = drop_into_pool(LiquidLanding::kKeepVelocity, 1);
+  const auto merge = drop_into_pool<2>(LiquidLanding::kMerge, 1);
+  const auto keep = drop_into_pool<2>(LiquidLanding::kKeepVelocity, 1);
   EXPECT_TRUE(merge.drop_flew);
   EXPECT_EQ(merge.landed, 1);
   EXPECT_EQ(keep.landed, 0);  // "keep_velocity" does not look for landings
@@ -180,8 +209,8 @@ TEST(LiquidLanding, ADropSmallerThanACellMergesIntoThePoolWithoutBouncing) {
   EXPECT_LT(keep.drop_velocity.back(), -0.3);  // the bounce the merge removes
   // The merge's sums are serial and its updates per point: a run on two threads repeats bit
   // for bit (with the solver's other sums, summed per thread in a fixed order).
-  const LandingRun two = drop_into_pool(LiquidLanding::kMerge, 1, 2);
-  const LandingRun again = drop_into_pool(LiquidLanding::kMerge, 1, 2);
+  const auto two = drop_into_pool<2>(LiquidLanding::kMerge, 1, 2);
+  const auto again = drop_into_pool<2>(LiquidLanding::kMerge, 1, 2);
   EXPECT_EQ(two.landed, 1);
   EXPECT_TRUE(two.velocity == again.velocity);
 }
@@ -192,8 +221,8 @@ TEST(LiquidLanding, ADropSmallerThanACellMergesIntoThePoolWithoutBouncing) {
 // which the grid's resolved impact sets (82 % with FLIP's own update), changes by less than
 // one percentage point with the merge.
 TEST(LiquidLanding, ADropTheGridResolvesCollidesAsBefore) {
-  const LandingRun merge = drop_into_pool(LiquidLanding::kMerge, 32);
-  const LandingRun keep = drop_into_pool(LiquidLanding::kKeepVelocity, 32);
+  const auto merge = drop_into_pool<2>(LiquidLanding::kMerge, 32);
+  const auto keep = drop_into_pool<2>(LiquidLanding::kKeepVelocity, 32);
   EXPECT_TRUE(merge.drop_flew);
   EXPECT_EQ(merge.landed, 32);
   EXPECT_NEAR(merge.momentum_x_after, merge.momentum_x_before, 1e-12 * merge.momentum_scale);
@@ -201,6 +230,24 @@ TEST(LiquidLanding, ADropTheGridResolvesCollidesAsBefore) {
   const double lost_keep = 1 - keep.kinetic_after / keep.kinetic_before;
   EXPECT_NEAR(lost_merge, lost_keep, 0.01);
   EXPECT_GT(lost_keep, 0.5);
+}
+
+// The same in 3D (tetrahedra): the sub-cell drop lands, merges without bouncing and the
+// momentum along x is kept. Reference and tolerances as in 2D; the drop's speed after
+// landing within [0, 0.1] m/s (the 3D pool is 2300 times its mass).
+TEST(LiquidLanding, ADropSmallerThanACellMergesIn3D) {
+  const auto merge = drop_into_pool<3>(LiquidLanding::kMerge, 1);
+  EXPECT_TRUE(merge.drop_flew);
+  EXPECT_EQ(merge.landed, 1);
+  EXPECT_NEAR(merge.momentum_x_after, merge.momentum_x_before, 1e-12 * merge.momentum_scale);
+  int after_landing = 0;
+  for (double v : merge.drop_velocity) {
+    if (v > 0.999) continue;
+    ++after_landing;
+    EXPECT_GE(v, 0.0);
+    EXPECT_LE(v, 0.1);
+  }
+  EXPECT_GT(after_landing, 5);
 }
 
 }  // namespace
