@@ -78,6 +78,10 @@ constexpr FieldNote kLiquidNotes[] = {
     {"mass", "1", "mass", "mass of the water of the point"},
     {"volume", "1", "volume", "volume of the water of the point (mixture volume times n)"},
     {"material", "1", "-", "material id of the water: position in materials.toml, from 0"},
+    {"in_flight", "1", "-",
+     "1 while the point's body of water rests on nothing (no wall, no grains at its nodes): "
+     "spray in free flight, merged into the water it lands on ([solver] liquid_landing); else "
+     "0, and always 0 with liquid_landing = \"keep_velocity\""},
 };
 constexpr FieldNote kGridNotes[] = {
     {"mass", "1", "mass", "nodal mass of the soil skeleton (solid points mapped to the node)"},
@@ -335,6 +339,9 @@ void OutputWriter<dim>::write_liquid(const Simulation<dim>& simulation, const Fr
   if (wants("mass")) w.add_point_data("mass", 1, q.mass);
   if (wants("volume")) w.add_point_data("volume", 1, q.volume);
   if (wants("material")) w.add_point_data("material", q.material);
+  if (wants("in_flight"))
+    w.add_point_data("in_flight",
+                     std::vector<std::int32_t>(q.in_flight.begin(), q.in_flight.end()));
   w.write(file);
 }
 

@@ -254,10 +254,12 @@ std::string output_error(const std::string& body) {
 TEST(OutputSettingsReader, RefusesUnknownFieldsWithLineAndKnownFields) {
   std::string msg = output_error("grid = true\nliquid_fields = [\"velocity\", \"presure\"]\n");
   EXPECT_NE(msg.find("lituya_output_settings_test.toml:3"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("unknown liquid point field \"presure\" in 'liquid_fields' (known: "
-                     "velocity, pressure, porosity, mass, volume, material; the point 'id' is "
-                     "always written)"),
-            std::string::npos)
+  EXPECT_NE(
+      msg.find("unknown liquid point field \"presure\" in 'liquid_fields' (known: "
+               "velocity, pressure, porosity, mass, volume, material, in_flight; the point 'id' "
+               "is "
+               "always written)"),
+      std::string::npos)
       << msg;
   msg = output_error("grid_fields = [\"stress\"]\n");
   EXPECT_NE(msg.find(":2"), std::string::npos) << msg;

@@ -184,8 +184,8 @@ struct SolverSettings {
 inline const std::vector<std::string> kSolidPointFields = {"displacement",   "velocity", "stress",
                                                            "plastic_strain", "material", "mass",
                                                            "volume",         "porosity"};
-inline const std::vector<std::string> kLiquidPointFields = {"velocity", "pressure", "porosity",
-                                                            "mass",     "volume",   "material"};
+inline const std::vector<std::string> kLiquidPointFields = {
+    "velocity", "pressure", "porosity", "mass", "volume", "material", "in_flight"};
 inline const std::vector<std::string> kGridFields = {
     "mass", "velocity", "liquid_mass", "liquid_velocity", "porosity", "liquid_pressure"};
 
