@@ -43,8 +43,6 @@
 // after at least 0.03 s at p = 0, it never acts (spray sheets press on themselves).
 #include <algorithm>
 #include <array>
-#include <cstdio>
-#include <cstdlib>
 
 #include <Eigen/Core>
 

@@ -330,8 +330,7 @@ class Simulation {
   std::vector<Vec> pore_water_velocity_, pore_water_acceleration_;
   std::vector<Vec> mean_water_velocity_;  // mass-weighted mean of the two (eq. 8's flux)
   // Landing of water in free flight (liquid_landing.cpp): the bodies' finder, the points that
-  // landed this step, the water at their nodes and the momentum they hand
-  // to each node.
+  // landed this step, the water at their nodes and the momentum they hand to each node.
   detail::WaterInFlight<dim> water_in_flight_;
   std::vector<std::size_t> landed_;
   std::vector<Vec> landing_impulse_, body_momentum_;
