@@ -99,8 +99,11 @@ to the last bit; --no-reuse runs every run whole. --repeats N makes each run N t
 the last stage's Courant number changed by 2e-4 of itself per repeat (a change far below
 any truncation error) and reports each measure's mean and spread (repeats.csv): a setting's
 effect, or a refinement step, is resolved only where it exceeds that spread; a sweep over
-mesh.cell_size then extrapolates the means. Exit code 5: at least one run of the sweep
-failed (the table marks it; the others are complete).
+mesh.cell_size then extrapolates the means. --repeat-by mesh makes the repeats on other
+meshes instead: repeat k sets [mesh] seed to one more than the last (gmsh then triangulates
+the same geometry at the same cell size differently), so the spread includes what a
+particular mesh does to a reading, which is often much more. Exit code 5: at least one run
+of the sweep failed (the table marks it; the others are complete).
 
 Given the folder DIR of a finished sweep instead, nothing is run: its runs, their repeats'
 spread and its mesh convergence are reported again from DIR/sweep.json. --merge DIR2 adds
@@ -171,6 +174,7 @@ struct Options {
   bool dry_run = false;                 // sweep
   bool no_reuse = false;                // sweep
   int repeats = 0;                      // sweep: 0 = as the sweep file says (default 1)
+  std::string repeat_by;                // sweep: "courant" or "mesh"; empty: as the file says
   std::vector<std::string> merge;       // sweep report: more sweep folders
   std::string sizes;                    // sweep report: H1,H2,H3 of the Richardson estimate
   bool allow_incomplete = false;        // post
@@ -296,21 +300,23 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
     table.push_back(std::move(c));
   }
   {
-    Command c = make("sweep",
-                     "lituya sweep SCENE.toml --parameter KEY --values V1,V2,... [--measure M,...] "
-                     "[-o DIR]\n              [--combine grid|zip] [--jobs N] [--threads N] "
-                     "[--force | --resume] [--dry-run]\n              [--no-reuse] [--repeats N]\n"
-                     "       lituya sweep SWEEP.toml [--measure M,...] [-o DIR] [--jobs N] "
-                     "[--threads N] [--force | --resume]\n              [--dry-run] [--no-reuse] "
-                     "[--repeats N]\n"
-                     "       lituya sweep DIR [--merge DIR2 ...] [--sizes H1,H2,H3] [-o DIR3] "
-                     "[--force]",
-                     std::string("Run the scene once per value of KEY, or per combination of the "
-                                 "values of several\nKEYs (pre + solve + post), then tabulate and "
-                                 "plot the measures against it.\n\n") +
-                         kSweepDetails,
-                     "a scene file (with --parameter and --values), a sweep file, or the folder "
-                     "of a finished sweep");
+    Command c = make(
+        "sweep",
+        "lituya sweep SCENE.toml --parameter KEY --values V1,V2,... [--measure M,...] "
+        "[-o DIR]\n              [--combine grid|zip] [--jobs N] [--threads N] "
+        "[--force | --resume] [--dry-run]\n              [--no-reuse] [--repeats N [--repeat-by "
+        "courant|mesh]]\n"
+        "       lituya sweep SWEEP.toml [--measure M,...] [-o DIR] [--jobs N] "
+        "[--threads N] [--force | --resume]\n              [--dry-run] [--no-reuse] "
+        "[--repeats N [--repeat-by courant|mesh]]\n"
+        "       lituya sweep DIR [--merge DIR2 ...] [--sizes H1,H2,H3] [-o DIR3] "
+        "[--force]",
+        std::string("Run the scene once per value of KEY, or per combination of the "
+                    "values of several\nKEYs (pre + solve + post), then tabulate and "
+                    "plot the measures against it.\n\n") +
+            kSweepDetails,
+        "a scene file (with --parameter and --values), a sweep file, or the folder "
+        "of a finished sweep");
     c.options.add_options()("parameter,p", po::value(&o.parameters)->composing()->value_name("KEY"),
                             "the scene key to vary (repeatable, one --values each)")(
         "values", po::value(&o.values)->composing()->value_name("V1,V2,..."),
@@ -329,6 +335,8 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
         "repeats", po::value(&o.repeats)->value_name("N"),
         "make each run N times (2-20), the last stage's Courant number changed by 2e-4 of "
         "itself per repeat, and report each measure's mean and spread")(
+        "repeat-by", po::value(&o.repeat_by)->value_name("WHAT"),
+        "what a repeat changes: courant (default) or mesh (another gmsh seed per repeat)")(
         "merge", po::value(&o.merge)->composing()->value_name("DIR2"),
         "with a sweep folder: add the runs of another finished sweep (repeatable)")(
         "sizes", po::value(&o.sizes)->value_name("H1,H2,H3"),
@@ -599,7 +607,7 @@ constexpr int kVerifyFailed = 4;
 // `lituya sweep DIR ...`: finished sweeps reported again (sweep/report.hpp).
 int report_sweeps(const Options& o) {
   if (!o.parameters.empty() || !o.values.empty() || o.combine != "grid" || !o.measures.empty() ||
-      o.repeats != 0 || o.resume || o.dry_run || o.no_reuse || o.jobs != 1)
+      o.repeats != 0 || !o.repeat_by.empty() || o.resume || o.dry_run || o.no_reuse || o.jobs != 1)
     throw UsageError("sweep", o.input +
                                   " is a sweep folder: it is reported, not run, and takes only "
                                   "--merge, --sizes, -o and --force");
@@ -677,6 +685,17 @@ int run_sweep(const Options& o, std::ostream& errors) {
     if (!range.empty()) throw UsageError("sweep", "--repeats " + range);
     definition.repeats = o.repeats;
     definition.repeats_line = 0;
+  }
+  if (!o.repeat_by.empty()) {
+    if (o.repeat_by != "courant" && o.repeat_by != "mesh")
+      throw UsageError("sweep", "--repeat-by must be courant or mesh (got '" + o.repeat_by + "')");
+    if (definition.repeats < 2)
+      throw UsageError("sweep", "--repeat-by " + o.repeat_by +
+                                    " says what the repeats change, but there are none: give "
+                                    "--repeats N (2-20) as well");
+    definition.repeat_by =
+        o.repeat_by == "mesh" ? lituya::sweep::RepeatBy::kMesh : lituya::sweep::RepeatBy::kCourant;
+    definition.repeat_by_line = 0;
   }
   lituya::sweep::SweepOptions options;
   options.threads = o.threads;

@@ -794,9 +794,11 @@ Mesh read_gmsh_mesh(const std::filesystem::path& geometry, const MeshingOptions&
     // refine locally. Set before opening (a .geo may mesh while it is read) and after (a .geo
     // may set its own value).
     gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
+    if (options.seed > 0) gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
     call_without_throwing(geometry, [&] { gmsh::open(geometry.string()); });
     if (extension == ".geo") {
       gmsh::option::setNumber("Mesh.MeshSizeMax", options.cell_size);
+      if (options.seed > 0) gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
       refuse_crashing_algorithms(geometry, options.dimension);
       refuse_too_large_mesh(geometry, options);
       // Quadrangles for a crossed mesh: gmsh's default triangulation, then recombined in

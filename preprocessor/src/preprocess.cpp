@@ -31,6 +31,7 @@ PreprocessSummary preprocess(const fs::path& scene_file, const fs::path& case_fo
   Scene scene = read_scene(scene_file);
   refuse_occupied_folder(case_folder, overwrite);
   MeshingOptions meshing{scene.dimension, scene.cell_size, gmsh_messages, scene.crossed};
+  meshing.seed = scene.mesh_seed;
   meshing.size_check = {!allow_large_mesh, scene.points_per_cell, scene.file, scene.cell_size_line};
   const Mesh mesh = read_gmsh_mesh(scene.geometry, meshing);
   check_scene_groups(scene, mesh);

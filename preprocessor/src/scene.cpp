@@ -12,6 +12,7 @@
 #include "lituya/common/toml_reader.hpp"
 #include "lituya/post/postprocess.hpp"
 #include "lituya/pre/case_writer.hpp"
+#include "lituya/pre/gmsh_mesh.hpp"
 #include "lituya/pre/seeding.hpp"
 #include "lituya/solver/mohr_coulomb.hpp"
 
@@ -62,6 +63,14 @@ void read_mesh_table(const TomlTable& root, const fs::path& scene_file, Scene& s
         "'mesh.crossed' = true is available in 2D only (quadrangles cut into four "
         "triangles); 3D meshes are tetrahedra as gmsh makes them",
         "crossed");
+  if (mesh.has("seed")) {
+    const long long seed = mesh.integer("seed");
+    if (seed < 1 || seed > kLargestMeshSeed)
+      mesh.fail("'mesh.seed' must be a whole number from 1 to " + std::to_string(kLargestMeshSeed) +
+                    " (got " + std::to_string(seed) + ")",
+                "seed");
+    scene.mesh_seed = static_cast<int>(seed);
+  }
 
   // `gravity` belongs to the scene root; a line written under [mesh] (as a reader of the
   // format example may do) is accepted too, but not both.

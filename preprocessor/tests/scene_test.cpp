@@ -182,6 +182,19 @@ TEST_F(BadScene, CrossedCellsAre2DOnly) {
   expect_error(scene, "scene.toml", line_of(scene, "crossed"), {"crossed", "2D only"});
 }
 
+TEST_F(BadScene, MeshSeedIsAPositiveWholeNumber) {
+  for (const char* bad : {"seed = 0", "seed = -3", "seed = 3000000000"}) {
+    const auto scene =
+        replaced(kScene, "points_per_cell = 4", std::string("points_per_cell = 4\n") + bad);
+    expect_error(scene, "scene.toml", line_of(scene, "seed"), {"'mesh.seed'", "1 to 2147483647"});
+  }
+  const auto scene = replaced(kScene, "points_per_cell = 4", "points_per_cell = 4\nseed = 7");
+  testing::write_text(folder_ / "scene.toml", scene);
+  EXPECT_EQ(read_scene(folder_ / "scene.toml").mesh_seed, 7);
+  testing::write_text(folder_ / "scene.toml", kScene);
+  EXPECT_EQ(read_scene(folder_ / "scene.toml").mesh_seed, 0);  // not given: gmsh's own
+}
+
 // A rough wall takes the friction of its soil, sin(phi) cos(psi) / (1 - sin(phi) sin(psi))
 // (Davis 1968): 0.5 for phi = 30, psi = 0; and it is written to the case as that number.
 TEST_F(BadScene, RoughWallTakesTheSoilsFriction) {

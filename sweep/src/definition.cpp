@@ -254,9 +254,19 @@ SweepDefinition read_sweep_file(const fs::path& file) {
     const std::string range = repeats_range_error(d.repeats);
     if (!range.empty()) root.fail("'repeats' " + range, "repeats");
   }
+  if (root.has("repeat_by")) {
+    d.repeat_by_line = root.line_of("repeat_by");
+    d.repeat_by = root.choice_or("repeat_by", {"courant", "mesh"}, "courant") == "mesh"
+                      ? RepeatBy::kMesh
+                      : RepeatBy::kCourant;
+  }
   root.finish();
   combinations(d);  // zip lengths, repeated keys and the number of runs, at their lines
   return d;
+}
+
+std::string repeat_by_name(RepeatBy by) {
+  return by == RepeatBy::kMesh ? "mesh" : "courant";
 }
 
 fs::path default_output(const SweepDefinition& d) {
@@ -290,6 +300,8 @@ std::string sweep_file_text(const SweepDefinition& d,
       "format = \"lituya-sweep\"\nversion = 1\n";
   text += "scene = " + quoted(fs::absolute(d.scene).lexically_normal().string()) + "\n";
   if (d.repeats > 1) text += "repeats = " + std::to_string(d.repeats) + "\n";
+  if (d.repeats > 1 && d.repeat_by != RepeatBy::kCourant)
+    text += "repeat_by = " + quoted(repeat_by_name(d.repeat_by)) + "\n";
   std::vector<std::string> measures;
   for (const std::string& m : measure_names) measures.push_back(quoted(m));
   if (d.parameters.size() == 1) {

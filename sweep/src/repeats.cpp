@@ -46,6 +46,12 @@ std::vector<std::string> repeat_values(double courant, int repeats) {
   return values;
 }
 
+std::vector<std::string> mesh_seed_values(long long first_seed, int repeats) {
+  std::vector<std::string> values;
+  for (int k = 0; k < repeats; ++k) values.push_back(std::to_string(first_seed + k));
+  return values;
+}
+
 Spread spread_of(const std::vector<double>& values) {
   Spread s;
   double sum = 0;
@@ -73,6 +79,11 @@ std::string group_of(const SweepResult& result, const RunRecord& run, std::size_
     if (p != skip && static_cast<int>(p) != result.repeat_parameter)
       group += (group.empty() ? "" : " ") + result.labels[p] + "=" + run.values[p];
   return group;
+}
+
+std::string repeat_key_of(const SweepResult& result) {
+  if (result.repeat_parameter < 0) return "";
+  return result.parameters.at(static_cast<std::size_t>(result.repeat_parameter));
 }
 
 std::vector<RepeatSummaryRow> repeat_summary(const SweepResult& result) {
@@ -107,7 +118,8 @@ void write_repeat_table(const std::filesystem::path& file,
   table.write(file);
 }
 
-std::string format_repeats(const std::vector<RepeatSummaryRow>& rows) {
+std::string format_repeats(const std::vector<RepeatSummaryRow>& rows,
+                           const std::string& repeat_key) {
   if (rows.empty()) return "";
   std::vector<std::vector<std::string>> lines{
       {"measure", "runs", "mean", "sd", "sd / mean", "smallest", "largest"}};
@@ -129,9 +141,22 @@ std::string format_repeats(const std::vector<RepeatSummaryRow>& rows) {
     if (grouped) line.insert(line.begin(), row.group.empty() ? "-" : row.group);
     lines.push_back(line);
   }
-  return "repeats (the last stage's Courant number changed by 2e-4 of itself per repeat; the "
-         "spread is the reading's own scatter):\n" +
-         align_columns(lines);
+  const std::string changed =
+      repeat_key == kMeshSeedKey
+          ? "another mesh per repeat, made with another seed of gmsh's random numbers at the same "
+            "cell size; the spread is the reading's scatter over meshes"
+          : "the last stage's Courant number changed by 2e-4 of itself per repeat; the spread is "
+            "the reading's own scatter";
+  std::string text = "repeats (" + changed + "):\n" + align_columns(lines);
+  // Equal meshes from two seeds are possible (gmsh meshes some simple geometries the same):
+  // a spread of exactly zero then says nothing about the mesh.
+  if (repeat_key == kMeshSeedKey &&
+      std::any_of(rows.begin(), rows.end(),
+                  [](const RepeatSummaryRow& r) { return r.spread.count > 1 && r.spread.sd == 0; }))
+    text +=
+        "a spread of exactly 0 over meshes: the seeds gave the same mesh (gmsh's randomness does "
+        "not change every geometry's triangulation); vary mesh.cell_size slightly instead\n";
+  return text;
 }
 
 }  // namespace lituya::sweep

@@ -29,6 +29,7 @@
 #include "lituya/common/stop_request.hpp"
 #include "lituya/post/plot.hpp"
 #include "lituya/post/postprocess.hpp"
+#include "lituya/pre/gmsh_mesh.hpp"
 #include "lituya/pre/preprocess.hpp"
 #include "lituya/pre/scene.hpp"
 #include "lituya/solver/case_description.hpp"
@@ -701,22 +702,13 @@ std::string process_end(int status) {
   return "the run's process ended with exit code " + std::to_string(WEXITSTATUS(status));
 }
 
-// Repeats (repeats.hpp): appends the repeat key, stage.<last>.courant with the values of
-// repeat_values, to `definition` and makes each combination `definition.repeats` runs, the
-// repeat varying fastest. Input errors name the sweep file (or --repeats) or the scene.
-void add_repeat_key(const SceneText& scene, SweepDefinition& definition,
-                    std::vector<std::vector<size_t>>& combos) {
-  const std::string where = definition.source.empty() ? "--repeats" : definition.source.string();
-  const std::string range = repeats_range_error(definition.repeats);
-  if (!range.empty()) throw InputError(where, definition.repeats_line, "repeats " + range);
+// Repeats (repeats.hpp): appends the repeat key to `definition` (stage.<last>.courant with the
+// values of repeat_values, or mesh.seed with those of mesh_seed_values) and makes each
+// combination `definition.repeats` runs, the repeat varying fastest. Input errors name the
+// sweep file (or --repeats) or the scene.
+SweepParameter courant_repeats(const SceneText& scene, const SweepDefinition& definition) {
   SweepParameter repeat;
   repeat.key = repeat_key(scene.table(), scene.file());
-  for (const SweepParameter& parameter : definition.parameters)
-    if (parameter.key == repeat.key)
-      throw InputError(where, parameter.line,
-                       "'" + repeat.key +
-                           "' is the key that repeats change (by 2e-4 of itself per repeat); "
-                           "sweep it or repeat the runs, not both");
   const KeyTarget target = scene.locate(repeat.key);
   double courant = solver::Stage{}.courant;
   if (target.present) {
@@ -729,6 +721,51 @@ void add_repeat_key(const SceneText& scene, SweepDefinition& definition,
     }
   }
   repeat.values = repeat_values(courant, definition.repeats);
+  return repeat;
+}
+
+SweepParameter mesh_repeats(const SceneText& scene, const SweepDefinition& definition) {
+  SweepParameter repeat;
+  repeat.key = kMeshSeedKey;
+  const KeyTarget target = scene.locate(repeat.key);
+  long long first = 1;  // gmsh's own seed when the scene gives none
+  if (target.present) {
+    std::size_t end = 0;
+    try {
+      first = std::stoll(target.current, &end);
+    } catch (const std::exception&) {
+      end = 0;
+    }
+    if (end == 0 || end != target.current.size())
+      throw InputError(
+          scene.file().string(), target.line,
+          "'mesh.seed' must be a whole number for --repeat-by mesh (got " + target.current + ")");
+  }
+  if (first < 1 || first + definition.repeats - 1 > pre::kLargestMeshSeed)
+    throw InputError(scene.file().string(), target.line,
+                     "--repeat-by mesh needs the seeds " + std::to_string(first) + " to " +
+                         std::to_string(first + definition.repeats - 1) +
+                         ", but 'mesh.seed' runs from 1 to " +
+                         std::to_string(pre::kLargestMeshSeed));
+  repeat.values = mesh_seed_values(first, definition.repeats);
+  return repeat;
+}
+
+void add_repeat_key(const SceneText& scene, SweepDefinition& definition,
+                    std::vector<std::vector<size_t>>& combos) {
+  const std::string where = definition.source.empty() ? "--repeats" : definition.source.string();
+  const std::string range = repeats_range_error(definition.repeats);
+  if (!range.empty()) throw InputError(where, definition.repeats_line, "repeats " + range);
+  const bool by_mesh = definition.repeat_by == RepeatBy::kMesh;
+  SweepParameter repeat =
+      by_mesh ? mesh_repeats(scene, definition) : courant_repeats(scene, definition);
+  for (const SweepParameter& parameter : definition.parameters)
+    if (parameter.key == repeat.key)
+      throw InputError(
+          where, parameter.line,
+          "'" + repeat.key + "' is the key that repeats change (" +
+              (by_mesh ? "the mesh's seed, one more per repeat" : "by 2e-4 of itself per repeat") +
+              "); sweep it or repeat the runs, not both");
   definition.parameters.push_back(repeat);
   std::vector<std::vector<size_t>> repeated;
   for (const std::vector<size_t>& combo : combos)
@@ -1101,7 +1138,8 @@ SweepResult run_sweep(const SweepDefinition& user_definition, const SweepOptions
       *options.report << reused << " of " << count
                       << " runs started from the end of stages they share with another run "
                          "(--no-reuse runs every run whole)\n";
-    *options.report << format_repeats(repeats) << format_convergence(convergence);
+    *options.report << format_repeats(repeats, repeat_key_of(result))
+                    << format_convergence(convergence);
     *options.report << "table: " << result.table.string() << "\n"
                     << "json:  " << result.summary.string() << "\n";
     if (result.plotted) *options.report << "plot:  " << result.plot.string() << "\n";

@@ -155,6 +155,24 @@ TEST(SweepDefinition, SeveralKeysErrorsNameTheFileAndLine) {
   EXPECT_NE(m.find("6 x 6 x 6 x 6 = 1296 runs, more than 1000"), std::string::npos) << m;
 }
 
+// repeat_by: "courant" (the default) or "mesh"; anything else names the line and the choices.
+TEST(SweepDefinition, RepeatByIsCourantOrMesh) {
+  const fs::path folder = fs::temp_directory_path() / "lituya_sweep_definition";
+  fs::create_directories(folder);
+  const fs::path file = folder / "repeat_by.toml";
+  const std::string header =
+      "format = \"lituya-sweep\"\nversion = 1\nscene = \"scene.toml\"\n"
+      "parameter = \"a.x\"\nvalues = [1]\nrepeats = 3\n";  // lines 1-6
+  std::ofstream(file) << header;
+  EXPECT_EQ(read_sweep_file(file).repeat_by, RepeatBy::kCourant);
+  std::ofstream(file) << header << "repeat_by = \"mesh\"\n";
+  EXPECT_EQ(read_sweep_file(file).repeat_by, RepeatBy::kMesh);
+  std::ofstream(file) << header << "repeat_by = \"seed\"\n";
+  const std::string m = input_error_message([&] { read_sweep_file(file); });
+  EXPECT_NE(m.find("repeat_by.toml:7:"), std::string::npos) << m;
+  EXPECT_NE(m.find("mesh"), std::string::npos) << m;
+}
+
 TEST(SweepProgressLine, BarCountsRunsAndEstimatesTheRest) {
   EXPECT_EQ(format_duration(7.44), "7.4s");
   EXPECT_EQ(format_duration(42.4), "42s");

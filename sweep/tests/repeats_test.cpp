@@ -82,7 +82,7 @@ TEST(Repeats, SummaryGroupsTheRunsByTheOtherKeys) {
   EXPECT_EQ(rows[1].group, "x=b");
   EXPECT_EQ(rows[1].spread.count, 2);
   EXPECT_DOUBLE_EQ(rows[1].spread.mean, 2.25);
-  EXPECT_NE(format_repeats(rows).find("x=b"), std::string::npos);
+  EXPECT_NE(format_repeats(rows, "stage.release.courant").find("x=b"), std::string::npos);
   result.repeat_parameter = -1;
   EXPECT_TRUE(repeat_summary(result).empty());
 }
@@ -170,6 +170,47 @@ TEST(Repeats, SweepRunsEachRunRepeatedAndSummarisesIt) {
   fs::remove_all(folder);
 }
 
+// Repeats on other meshes (--repeat-by mesh): two repeats are runs with [mesh] seed 1 and 2
+// (the test scene gives none: gmsh's own 1 first), each with its own mesh, so the second run
+// cannot take the gravity stage from the first (the stage inputs differ) and their front
+// travels differ; sweep.toml records repeat_by and reads back as the same sweep.
+TEST(Repeats, MeshRepeatsRunEachRepeatOnAnotherMesh) {
+  const fs::path folder = fs::temp_directory_path() / "lituya_sweep_repeats_mesh";
+  fs::remove_all(folder);
+  SweepDefinition d;
+  d.scene = fs::path(LITUYA_SWEEP_TEST_DATA) / "collapse.toml";
+  d.parameters = {{"material.sand.friction_angle", {"30"}}};
+  d.measures = {"front_travel_final"};
+  d.output = folder;
+  d.repeats = 2;
+  d.repeat_by = RepeatBy::kMesh;
+  const SweepResult result = run_sweep(d, SweepOptions{});
+  ASSERT_TRUE(result.all_ok());
+  ASSERT_EQ(result.runs.size(), 2u);
+  EXPECT_EQ(result.parameters[1], "mesh.seed");
+  EXPECT_EQ(result.runs[0].values[1], "1");
+  EXPECT_EQ(result.runs[1].values[1], "2");
+  EXPECT_EQ(result.runs[1].reused_from, 0);
+  std::ifstream geometry_a(folder / result.runs[0].folder.filename() / "case" / "geometry.vtu");
+  std::ifstream geometry_b(folder / result.runs[1].folder.filename() / "case" / "geometry.vtu");
+  const std::string mesh_a((std::istreambuf_iterator<char>(geometry_a)), {});
+  const std::string mesh_b((std::istreambuf_iterator<char>(geometry_b)), {});
+  ASSERT_FALSE(mesh_a.empty());
+  EXPECT_NE(mesh_a, mesh_b);
+  EXPECT_NE(result.runs[0].measures[0], result.runs[1].measures[0]);
+  const SweepDefinition again = read_sweep_file(folder / "sweep.toml");
+  EXPECT_EQ(again.repeats, 2);
+  EXPECT_EQ(again.repeat_by, RepeatBy::kMesh);
+  EXPECT_NE(format_repeats(repeat_summary(result), repeat_key_of(result)).find("another mesh"),
+            std::string::npos);
+  fs::remove_all(folder);
+}
+
+TEST(Repeats, MeshSeedValuesCountUpFromTheScenesSeed) {
+  EXPECT_EQ(mesh_seed_values(1, 3), (std::vector<std::string>{"1", "2", "3"}));
+  EXPECT_EQ(mesh_seed_values(40, 2), (std::vector<std::string>{"40", "41"}));
+}
+
 // Sweeping the key the repeats change is refused before anything is written.
 TEST(Repeats, SweepingTheRepeatKeyIsRefused) {
   const fs::path folder = fs::temp_directory_path() / "lituya_sweep_repeats_refused";
@@ -179,6 +220,10 @@ TEST(Repeats, SweepingTheRepeatKeyIsRefused) {
   d.parameters = {{"stage.release.courant", {"0.4", "0.5"}}};
   d.output = folder;
   d.repeats = 2;
+  EXPECT_THROW(run_sweep(d, SweepOptions{}), lituya::InputError);
+  EXPECT_FALSE(fs::exists(folder));
+  d.parameters = {{"mesh.seed", {"3", "4"}}};
+  d.repeat_by = RepeatBy::kMesh;
   EXPECT_THROW(run_sweep(d, SweepOptions{}), lituya::InputError);
   EXPECT_FALSE(fs::exists(folder));
 }

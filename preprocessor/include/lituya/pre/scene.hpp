@@ -63,6 +63,7 @@ struct Scene {
   int cell_size_line = 0;  // scene.toml line of `cell_size`, for the memory check's refusal
   int points_per_cell = 0;
   bool crossed = false;  // [mesh] crossed: quadrangles cut into four (MeshingOptions::crossed)
+  int mesh_seed = 0;     // [mesh] seed: gmsh's Mesh.RandomSeed (MeshingOptions::seed); 0: not given
   std::vector<double> gravity;  // `dimension` components
   std::vector<solver::Material> materials;
   std::vector<Region> regions;

@@ -24,6 +24,12 @@ enum class Combination { kGrid, kZip };
 // "grid", "zip".
 std::string combination_name(Combination combination);
 
+// What a repeat changes (repeats.hpp): the last stage's Courant number by 2e-4 of itself, or
+// the mesh, made again with another seed of gmsh's random numbers ([mesh] seed).
+enum class RepeatBy { kCourant, kMesh };
+// "courant", "mesh".
+std::string repeat_by_name(RepeatBy by);
+
 struct SweepDefinition {
   std::filesystem::path scene;             // the scene file
   std::vector<SweepParameter> parameters;  // at least one
@@ -35,6 +41,9 @@ struct SweepDefinition {
   // per repeat (repeats.hpp); 1: no repeats. `repeats_line`: its line in the sweep file.
   int repeats = 1;
   int repeats_line = 0;
+  // What each repeat changes; `repeat_by_line`: its line in the sweep file.
+  RepeatBy repeat_by = RepeatBy::kCourant;
+  int repeat_by_line = 0;
 };
 
 // The most runs a sweep may have (a grid grows fast).
@@ -67,6 +76,8 @@ bool is_sweep_file(const std::filesystem::path& file);
 //   measures = ["gauge_first_crest"]            # optional
 //   output = "sweep_phi"                        # optional, relative to the sweep file
 //   repeats = 3                                 # optional: each run 3 times (repeats.hpp)
+//   repeat_by = "mesh"                          # optional: what a repeat changes, "courant"
+//                                               # (default) or "mesh" (another gmsh seed)
 // Several keys: instead of parameter and values, one [[parameter]] entry per key, and how they
 // combine (optional, default "grid"):
 //   combine = "grid"                            # every combination; "zip": i-th values together

@@ -11,13 +11,24 @@
 // agreed to 0.7 % by chance and were read as convergence. A setting's effect, or a refinement
 // step, is resolved only where it exceeds that scatter.
 //
-// How: repeat k (k = 0 ... N-1) sets the last stage's Courant number to C (1 - 2e-4 k), C the
+// How (`--repeat-by courant`, the default): repeat k (k = 0 ... N-1) sets the last stage's
+// Courant number to C (1 - 2e-4 k), C the
 // scene's value (or the solver's default 0.5): the time step changes by a few parts in ten
 // thousand, the physics and its discretisation do not. The perturbed key is appended to the
 // sweep's keys (it varies fastest) and marked as the repeat key; the earlier stages are the
 // same in every repeat, so they are run once and reused (sweep.hpp). The summary groups runs
 // by the values of the other keys; the mesh convergence (convergence.hpp) takes each cell
 // size's mean and says when the last refinement's change is within twice its standard error.
+//
+// A mesh is one sample too (`--repeat-by mesh`). Repeat k sets [mesh] seed = s + k, s the
+// scene's seed (1 when it gives none, gmsh's default): gmsh makes another triangulation of the
+// same geometry at the same cell size, often with most interior nodes elsewhere (not always:
+// gmsh meshes some simple shapes the same for several seeds), and every stage
+// runs again. Why: on examples/case_b_2d at 0.015 m the Courant repeats scatter X1's first
+// crest by 0.4-0.8 %, five meshes of 0.98-1.02 times that size by 6 %
+// (verification/speed_accuracy_case_b/README.md, "A mesh ensemble"): a change of mesh
+// topology moves a reading far more than a change of the time step, and a refinement step
+// judged against the Courant scatter alone can look resolved when it is not.
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -39,6 +50,12 @@ inline constexpr double kRepeatCourantStep = 2e-4;
 // "stage.<name>.courant" of the scene's last [[stage]] (by its name, else its index).
 // InputError naming the scene when it has no [[stage]].
 std::string repeat_key(const toml::table& scene, const std::filesystem::path& scene_file);
+
+// The key of the mesh repeats.
+inline constexpr const char* kMeshSeedKey = "mesh.seed";
+
+// The values of the mesh repeats: first_seed + k, k = 0 ... repeats - 1, as TOML integers.
+std::vector<std::string> mesh_seed_values(long long first_seed, int repeats);
 
 // The values of the repeat key: courant (1 - kRepeatCourantStep k), k = 0 ... repeats - 1,
 // written with ten significant digits as TOML floats ("1.0", not "1").
@@ -65,6 +82,9 @@ struct RepeatSummaryRow {
   Spread spread;
 };
 
+// The sweep's repeat key, empty without repeats.
+std::string repeat_key_of(const SweepResult& result);
+
 // One row per combination of the other keys and measure, in run order; empty when the sweep
 // has no repeats.
 std::vector<RepeatSummaryRow> repeat_summary(const SweepResult& result);
@@ -73,7 +93,9 @@ std::vector<RepeatSummaryRow> repeat_summary(const SweepResult& result);
 void write_repeat_table(const std::filesystem::path& file,
                         const std::vector<RepeatSummaryRow>& rows);
 
-// The table printed at the end of the sweep's report.
-std::string format_repeats(const std::vector<RepeatSummaryRow>& rows);
+// The table printed at the end of the sweep's report; `repeat_key` (the sweep's, as in
+// SweepResult::parameters) says what the repeats changed.
+std::string format_repeats(const std::vector<RepeatSummaryRow>& rows,
+                           const std::string& repeat_key);
 
 }  // namespace lituya::sweep
