@@ -116,19 +116,28 @@ TEST(Repeats, MeshConvergenceExtrapolatesTheMeansAndJudgesTheLastChange) {
   EXPECT_NEAR(rows[1].spread[0].sd, 0.02 * std::sqrt(2.0), 1e-12);
 }
 
+// A sweep of the test column at one friction angle, repeated, front travel measured, into a
+// fresh folder under the temporary directory.
+SweepDefinition repeated_column_sweep(const std::string& folder_name, int repeats,
+                                      RepeatBy by = RepeatBy::kCourant) {
+  SweepDefinition d;
+  d.scene = fs::path(LITUYA_SWEEP_TEST_DATA) / "collapse.toml";
+  d.parameters = {{"material.sand.friction_angle", {"30"}}};
+  d.measures = {"front_travel_final"};
+  d.output = fs::temp_directory_path() / folder_name;
+  fs::remove_all(d.output);
+  d.repeats = repeats;
+  d.repeat_by = by;
+  return d;
+}
+
 // End to end on the test column (about a second a run): three repeats of one friction angle
 // are three runs at release Courant numbers 0.5, 0.4999, 0.4998; repeats.csv holds their
 // mean; they share the gravity stage (run once); sweep.toml records `repeats = 3` and reads
 // back as the same sweep of one key.
 TEST(Repeats, SweepRunsEachRunRepeatedAndSummarisesIt) {
-  const fs::path folder = fs::temp_directory_path() / "lituya_sweep_repeats";
-  fs::remove_all(folder);
-  SweepDefinition d;
-  d.scene = fs::path(LITUYA_SWEEP_TEST_DATA) / "collapse.toml";
-  d.parameters = {{"material.sand.friction_angle", {"30"}}};
-  d.measures = {"front_travel_final"};
-  d.output = folder;
-  d.repeats = 3;
+  const SweepDefinition d = repeated_column_sweep("lituya_sweep_repeats", 3);
+  const fs::path folder = d.output;
   const SweepResult result = run_sweep(d, SweepOptions{});
   ASSERT_TRUE(result.all_ok());
   ASSERT_EQ(result.runs.size(), 3u);
@@ -175,15 +184,8 @@ TEST(Repeats, SweepRunsEachRunRepeatedAndSummarisesIt) {
 // cannot take the gravity stage from the first (the stage inputs differ) and their front
 // travels differ; sweep.toml records repeat_by and reads back as the same sweep.
 TEST(Repeats, MeshRepeatsRunEachRepeatOnAnotherMesh) {
-  const fs::path folder = fs::temp_directory_path() / "lituya_sweep_repeats_mesh";
-  fs::remove_all(folder);
-  SweepDefinition d;
-  d.scene = fs::path(LITUYA_SWEEP_TEST_DATA) / "collapse.toml";
-  d.parameters = {{"material.sand.friction_angle", {"30"}}};
-  d.measures = {"front_travel_final"};
-  d.output = folder;
-  d.repeats = 2;
-  d.repeat_by = RepeatBy::kMesh;
+  const SweepDefinition d = repeated_column_sweep("lituya_sweep_repeats_mesh", 2, RepeatBy::kMesh);
+  const fs::path folder = d.output;
   const SweepResult result = run_sweep(d, SweepOptions{});
   ASSERT_TRUE(result.all_ok());
   ASSERT_EQ(result.runs.size(), 2u);
