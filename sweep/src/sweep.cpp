@@ -702,10 +702,8 @@ std::string process_end(int status) {
   return "the run's process ended with exit code " + std::to_string(WEXITSTATUS(status));
 }
 
-// Repeats (repeats.hpp): appends the repeat key to `definition` (stage.<last>.courant with the
-// values of repeat_values, or mesh.seed with those of mesh_seed_values) and makes each
-// combination `definition.repeats` runs, the repeat varying fastest. Input errors name the
-// sweep file (or --repeats) or the scene.
+// The Courant repeats: stage.<last>.courant with the values of repeat_values, from the scene's
+// Courant number (or the solver's default).
 SweepParameter courant_repeats(const SceneText& scene, const SweepDefinition& definition) {
   SweepParameter repeat;
   repeat.key = repeat_key(scene.table(), scene.file());
@@ -724,6 +722,8 @@ SweepParameter courant_repeats(const SceneText& scene, const SweepDefinition& de
   return repeat;
 }
 
+// The mesh repeats: mesh.seed with the values of mesh_seed_values, from the scene's seed (or
+// gmsh's default, 1).
 SweepParameter mesh_repeats(const SceneText& scene, const SweepDefinition& definition) {
   SweepParameter repeat;
   repeat.key = kMeshSeedKey;
@@ -751,6 +751,9 @@ SweepParameter mesh_repeats(const SceneText& scene, const SweepDefinition& defin
   return repeat;
 }
 
+// Repeats (repeats.hpp): appends the repeat key (Courant or mesh, as `definition.repeat_by`
+// says) to `definition` and makes each combination `definition.repeats` runs, the repeat
+// varying fastest. Input errors name the sweep file (or --repeats) or the scene.
 void add_repeat_key(const SceneText& scene, SweepDefinition& definition,
                     std::vector<std::vector<size_t>>& combos) {
   const std::string where = definition.source.empty() ? "--repeats" : definition.source.string();
@@ -867,8 +870,9 @@ SweepResult run_sweep(const SweepDefinition& user_definition, const SweepOptions
   std::vector<bool> numeric_parameter;
   for (const SweepParameter& parameter : definition.parameters) {
     targets.push_back(scene.locate(parameter.key));
-    // The repeat values are the sweep's own TOML floats: a scene's `courant = 1` (an integer)
-    // must not make them a type error the user cannot fix on the command line.
+    // The repeat values are the sweep's own TOML literals (floats for the Courant number,
+    // integers for the seed): a scene's `courant = 1` (an integer) must not make them a type
+    // error the user cannot fix on the command line.
     const bool repeat_key = definition.repeats > 1 && &parameter == &definition.parameters.back();
     literals.push_back(repeat_key ? parameter.values
                                   : scene.literals(targets.back(), parameter.values));
