@@ -687,15 +687,15 @@ int run_sweep(const Options& o, std::ostream& errors) {
     definition.repeats_line = 0;
   }
   if (!o.repeat_by.empty()) {
-    if (o.repeat_by != "courant" && o.repeat_by != "mesh")
+    const std::optional<lituya::sweep::RepeatBy> by =
+        lituya::sweep::repeat_by_from_name(o.repeat_by);
+    if (!by)
       throw UsageError("sweep", "--repeat-by must be courant or mesh (got '" + o.repeat_by + "')");
     if (definition.repeats < 2)
       throw UsageError("sweep", "--repeat-by " + o.repeat_by +
                                     " says what the repeats change, but there are none: give "
                                     "--repeats N (2-20) as well");
-    definition.repeat_by =
-        o.repeat_by == "mesh" ? lituya::sweep::RepeatBy::kMesh : lituya::sweep::RepeatBy::kCourant;
-    definition.repeat_by_line = 0;
+    definition.repeat_by = *by;
   }
   lituya::sweep::SweepOptions options;
   options.threads = o.threads;

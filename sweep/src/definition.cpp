@@ -254,12 +254,9 @@ SweepDefinition read_sweep_file(const fs::path& file) {
     const std::string range = repeats_range_error(d.repeats);
     if (!range.empty()) root.fail("'repeats' " + range, "repeats");
   }
-  if (root.has("repeat_by")) {
-    d.repeat_by_line = root.line_of("repeat_by");
-    d.repeat_by = root.choice_or("repeat_by", {"courant", "mesh"}, "courant") == "mesh"
-                      ? RepeatBy::kMesh
-                      : RepeatBy::kCourant;
-  }
+  if (root.has("repeat_by"))
+    d.repeat_by = *repeat_by_from_name(root.choice_or(
+        "repeat_by", {repeat_by_name(RepeatBy::kCourant), repeat_by_name(RepeatBy::kMesh)}, ""));
   root.finish();
   combinations(d);  // zip lengths, repeated keys and the number of runs, at their lines
   return d;
@@ -267,6 +264,12 @@ SweepDefinition read_sweep_file(const fs::path& file) {
 
 std::string repeat_by_name(RepeatBy by) {
   return by == RepeatBy::kMesh ? "mesh" : "courant";
+}
+
+std::optional<RepeatBy> repeat_by_from_name(const std::string& name) {
+  for (RepeatBy by : {RepeatBy::kCourant, RepeatBy::kMesh})
+    if (name == repeat_by_name(by)) return by;
+  return std::nullopt;
 }
 
 fs::path default_output(const SweepDefinition& d) {

@@ -6,6 +6,7 @@
 // definition as a sweep file (sweep.toml in its folder), so that it can be run again as it was.
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,8 +28,10 @@ std::string combination_name(Combination combination);
 // What a repeat changes (repeats.hpp): the last stage's Courant number by 2e-4 of itself, or
 // the mesh, made again with another seed of gmsh's random numbers ([mesh] seed).
 enum class RepeatBy { kCourant, kMesh };
-// "courant", "mesh".
+// "courant", "mesh"; and back (nullopt for any other name), for the sweep file and the
+// command line alike.
 std::string repeat_by_name(RepeatBy by);
+std::optional<RepeatBy> repeat_by_from_name(const std::string& name);
 
 struct SweepDefinition {
   std::filesystem::path scene;             // the scene file
@@ -41,9 +44,8 @@ struct SweepDefinition {
   // per repeat (repeats.hpp); 1: no repeats. `repeats_line`: its line in the sweep file.
   int repeats = 1;
   int repeats_line = 0;
-  // What each repeat changes; `repeat_by_line`: its line in the sweep file.
+  // What each repeat changes.
   RepeatBy repeat_by = RepeatBy::kCourant;
-  int repeat_by_line = 0;
 };
 
 // The most runs a sweep may have (a grid grows fast).
