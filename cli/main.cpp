@@ -333,10 +333,12 @@ std::vector<Command> command_table(Options& o, const ThreadsDefault& threads) {
         "no-reuse", po::bool_switch(&o.no_reuse),
         "run every run whole, even the first stages it shares with another run")(
         "repeats", po::value(&o.repeats)->value_name("N"),
-        "make each run N times (2-20), the last stage's Courant number changed by 2e-4 of "
-        "itself per repeat, and report each measure's mean and spread")(
+        "make each run N times (2-20), each repeat on another mesh or with the last stage's "
+        "Courant number changed by 2e-4 of itself (--repeat-by), and report each measure's "
+        "mean and spread")(
         "repeat-by", po::value(&o.repeat_by)->value_name("WHAT"),
-        "what a repeat changes: courant (default) or mesh (another gmsh seed per repeat)")(
+        "what a repeat changes: mesh (another gmsh seed per repeat; the default when "
+        "mesh.cell_size is swept) or courant (the default otherwise)")(
         "merge", po::value(&o.merge)->composing()->value_name("DIR2"),
         "with a sweep folder: add the runs of another finished sweep (repeatable)")(
         "sizes", po::value(&o.sizes)->value_name("H1,H2,H3"),

@@ -266,6 +266,13 @@ std::string repeat_by_name(RepeatBy by) {
   return by == RepeatBy::kMesh ? "mesh" : "courant";
 }
 
+RepeatBy repeat_by_for(const SweepDefinition& definition) {
+  if (definition.repeat_by) return *definition.repeat_by;
+  for (const SweepParameter& parameter : definition.parameters)
+    if (parameter.key == kCellSizeKey) return RepeatBy::kMesh;
+  return RepeatBy::kCourant;
+}
+
 std::optional<RepeatBy> repeat_by_from_name(const std::string& name) {
   for (RepeatBy by : {RepeatBy::kCourant, RepeatBy::kMesh})
     if (name == repeat_by_name(by)) return by;
@@ -303,8 +310,9 @@ std::string sweep_file_text(const SweepDefinition& d,
       "format = \"lituya-sweep\"\nversion = 1\n";
   text += "scene = " + quoted(fs::absolute(d.scene).lexically_normal().string()) + "\n";
   if (d.repeats > 1) text += "repeats = " + std::to_string(d.repeats) + "\n";
-  if (d.repeats > 1 && d.repeat_by != RepeatBy::kCourant)
-    text += "repeat_by = " + quoted(repeat_by_name(d.repeat_by)) + "\n";
+  // Written whenever there are repeats, so that the file runs the same sweep whatever the
+  // default of a later version.
+  if (d.repeats > 1) text += "repeat_by = " + quoted(repeat_by_name(repeat_by_for(d))) + "\n";
   std::vector<std::string> measures;
   for (const std::string& m : measure_names) measures.push_back(quoted(m));
   if (d.parameters.size() == 1) {

@@ -751,7 +751,7 @@ SweepParameter mesh_repeats(const SceneText& scene, const SweepDefinition& defin
   return repeat;
 }
 
-// Repeats (repeats.hpp): appends the repeat key (Courant or mesh, as `definition.repeat_by`
+// Repeats (repeats.hpp): appends the repeat key (Courant or mesh, as repeat_by_for
 // says) to `definition` and makes each combination `definition.repeats` runs, the repeat
 // varying fastest. Input errors name the sweep file (or --repeats) or the scene.
 void add_repeat_key(const SceneText& scene, SweepDefinition& definition,
@@ -759,6 +759,7 @@ void add_repeat_key(const SceneText& scene, SweepDefinition& definition,
   const std::string where = definition.source.empty() ? "--repeats" : definition.source.string();
   const std::string range = repeats_range_error(definition.repeats);
   if (!range.empty()) throw InputError(where, definition.repeats_line, "repeats " + range);
+  definition.repeat_by = repeat_by_for(definition);  // before the repeat key joins the keys
   const bool by_mesh = definition.repeat_by == RepeatBy::kMesh;
   SweepParameter repeat =
       by_mesh ? mesh_repeats(scene, definition) : courant_repeats(scene, definition);

@@ -155,7 +155,9 @@ TEST(SweepDefinition, SeveralKeysErrorsNameTheFileAndLine) {
   EXPECT_NE(m.find("6 x 6 x 6 x 6 = 1296 runs, more than 1000"), std::string::npos) << m;
 }
 
-// repeat_by: "courant" (the default) or "mesh"; anything else names the line and the choices.
+// repeat_by: "courant" or "mesh"; anything else names the line and the choices. Left out, the
+// repeats change the mesh when the sweep refines it (mesh.cell_size among its keys) and the
+// Courant number otherwise.
 TEST(SweepDefinition, RepeatByIsCourantOrMesh) {
   const fs::path folder = fs::temp_directory_path() / "lituya_sweep_definition";
   fs::create_directories(folder);
@@ -164,6 +166,14 @@ TEST(SweepDefinition, RepeatByIsCourantOrMesh) {
       "format = \"lituya-sweep\"\nversion = 1\nscene = \"scene.toml\"\n"
       "parameter = \"a.x\"\nvalues = [1]\nrepeats = 3\n";  // lines 1-6
   std::ofstream(file) << header;
+  SweepDefinition d = read_sweep_file(file);
+  EXPECT_FALSE(d.repeat_by.has_value());
+  EXPECT_EQ(repeat_by_for(d), RepeatBy::kCourant);
+  d.parameters.push_back({"mesh.cell_size", {"0.02", "0.01"}});
+  EXPECT_EQ(repeat_by_for(d), RepeatBy::kMesh);
+  d.repeat_by = RepeatBy::kCourant;
+  EXPECT_EQ(repeat_by_for(d), RepeatBy::kCourant);
+  std::ofstream(file) << header << "repeat_by = \"courant\"\n";
   EXPECT_EQ(read_sweep_file(file).repeat_by, RepeatBy::kCourant);
   std::ofstream(file) << header << "repeat_by = \"mesh\"\n";
   EXPECT_EQ(read_sweep_file(file).repeat_by, RepeatBy::kMesh);

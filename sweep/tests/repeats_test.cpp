@@ -208,6 +208,66 @@ TEST(Repeats, MeshRepeatsRunEachRepeatOnAnotherMesh) {
   fs::remove_all(folder);
 }
 
+// Seeds that give the same mesh are one sample, not several: the summary counts the different
+// case/geometry.vtu of each group, and the report names the group whose runs shared a mesh.
+// Here the group h=0.02 has three runs on two meshes (seeds 1 and 3 the same file), the group
+// h=0.01 two runs on two meshes, and a run that never meshed is not counted.
+TEST(Repeats, MeshRepeatsOnTheSameMeshAreNamed) {
+  const fs::path folder = fs::temp_directory_path() / "lituya_sweep_repeats_same_mesh";
+  fs::remove_all(folder);
+  SweepResult result;
+  result.parameters = {"mesh.cell_size", "mesh.seed"};
+  result.labels = {"cell_size", "seed"};
+  result.measures = {"front"};
+  result.repeat_parameter = 1;
+  const std::vector<std::pair<std::vector<std::string>, std::string>> runs = {
+      {{"0.02", "1"}, "mesh A"}, {{"0.02", "2"}, "mesh B"}, {{"0.02", "3"}, "mesh A"},
+      {{"0.02", "4"}, ""},       {{"0.01", "1"}, "mesh C"}, {{"0.01", "2"}, "mesh D"}};
+  for (const auto& [values, mesh] : runs) {
+    result.runs.push_back(run(static_cast<int>(result.runs.size()) + 1, values,
+                              {1.0 + 0.1 * static_cast<double>(result.runs.size())}));
+    result.runs.back().folder = folder / ("run_" + std::to_string(result.runs.size()));
+    if (mesh.empty()) continue;
+    fs::create_directories(result.runs.back().folder / "case");
+    std::ofstream(result.runs.back().folder / "case" / "geometry.vtu") << mesh;
+  }
+  const std::vector<RepeatSummaryRow> rows = repeat_summary(result);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].meshed_runs, 3);
+  EXPECT_EQ(rows[0].meshes, 2);
+  EXPECT_EQ(rows[1].meshed_runs, 2);
+  EXPECT_EQ(rows[1].meshes, 2);
+  const std::string text = format_repeats(rows, "mesh.seed");
+  EXPECT_NE(text.find("the repeats with cell_size=0.02: 3 runs on 2 different meshes"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("cell_size=0.01: "), std::string::npos) << text;
+  // Courant repeats never count meshes.
+  result.parameters[1] = "stage.release.courant";
+  EXPECT_EQ(repeat_summary(result)[0].meshes, 0);
+  fs::remove_all(folder);
+}
+
+// A refinement sweep repeats on other meshes unless told otherwise (repeat_by_for): a dry run
+// of the test column over two cell sizes, two repeats each, plans seeds 1 and 2; the same
+// sweep with repeat_by = courant plans the Courant repeats.
+TEST(Repeats, ACellSizeSweepRepeatsOnOtherMeshesByDefault) {
+  SweepDefinition d = repeated_column_sweep("lituya_sweep_repeats_default", 2);
+  d.repeat_by.reset();
+  d.parameters = {{"mesh.cell_size", {"0.025", "0.0125"}}};
+  SweepOptions dry;
+  dry.dry_run = true;
+  SweepResult result = run_sweep(d, dry);
+  ASSERT_EQ(result.parameters.size(), 2u);
+  EXPECT_EQ(result.parameters[1], "mesh.seed");
+  ASSERT_EQ(result.runs.size(), 4u);
+  EXPECT_EQ(result.runs[1].values[1], "2");
+  d.repeat_by = RepeatBy::kCourant;
+  result = run_sweep(d, dry);
+  EXPECT_EQ(result.parameters[1], "stage.release.courant");
+  fs::remove_all(d.output);
+}
+
 TEST(Repeats, MeshSeedValuesCountUpFromTheScenesSeed) {
   EXPECT_EQ(mesh_seed_values(1, 3), (std::vector<std::string>{"1", "2", "3"}));
   EXPECT_EQ(mesh_seed_values(40, 2), (std::vector<std::string>{"40", "41"}));

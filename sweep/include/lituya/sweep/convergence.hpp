@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "lituya/sweep/definition.hpp"
 #include "lituya/sweep/repeats.hpp"
 
 namespace lituya::sweep {
@@ -44,9 +45,8 @@ struct RunRecord;
 // extrapolation out.
 inline constexpr double kHighestPlausibleOrder = 3.0;
 
-// The sweep key of the cell size, and a run's value of it: NaN unless the whole text is a
-// positive number.
-inline constexpr const char* kCellSizeKey = "mesh.cell_size";
+// A run's value of the cell size (kCellSizeKey, definition.hpp): NaN unless the whole text is
+// a positive number.
 double run_cell_size(const RunRecord& run, std::size_t cell_key);
 
 enum class ConvergenceBehaviour { kUnchanged, kMonotone, kOscillatory, kNotConverging };

@@ -80,6 +80,9 @@ struct RepeatSummaryRow {
   std::string group;    // "key=value ..." of the other keys, empty when there are none
   std::string measure;  // as in sweep.csv
   Spread spread;
+  // Mesh repeats: of the group's runs that made a mesh (case/geometry.vtu), how many, and how
+  // many different meshes they had (compared byte for byte). Both 0 for Courant repeats.
+  int meshed_runs = 0, meshes = 0;
 };
 
 // The sweep's repeat key, empty without repeats.
@@ -94,7 +97,9 @@ void write_repeat_table(const std::filesystem::path& file,
                         const std::vector<RepeatSummaryRow>& rows);
 
 // The table printed at the end of the sweep's report; `repeat_key` (the sweep's, as in
-// SweepResult::parameters) says what the repeats changed.
+// SweepResult::parameters) says what the repeats changed. For mesh repeats it names every
+// group whose seeds gave fewer meshes than runs (gmsh meshes some simple geometries the same
+// for several seeds): its spread then understates the scatter over meshes, or is zero.
 std::string format_repeats(const std::vector<RepeatSummaryRow>& rows,
                            const std::string& repeat_key);
 
