@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <map>
@@ -91,15 +92,18 @@ std::string repeat_key_of(const SweepResult& result) {
 }
 
 namespace {
-// {runs that made a mesh, different meshes among them} (case/geometry.vtu, byte for byte).
+// {runs that made a mesh, different meshes among them}: case/geometry.vtu compared by its
+// length and a 64-bit hash of its bytes (one file in memory at a time: a fine mesh's file is
+// tens of megabytes, and a group may have 20 repeats).
 std::pair<int, int> count_meshes(const std::vector<const RunRecord*>& runs) {
-  std::set<std::string> meshes;
+  std::set<std::pair<std::size_t, std::size_t>> meshes;
   int meshed = 0;
   for (const RunRecord* run : runs) {
     std::ifstream file(run->folder / "case" / "geometry.vtu", std::ios::binary);
     if (!file) continue;
     ++meshed;
-    meshes.insert(std::string(std::istreambuf_iterator<char>(file), {}));
+    const std::string bytes(std::istreambuf_iterator<char>(file), {});
+    meshes.insert({bytes.size(), std::hash<std::string>{}(bytes)});
   }
   return {meshed, static_cast<int>(meshes.size())};
 }
