@@ -3,10 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
-#include <fstream>
-#include <functional>
-#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -16,6 +14,7 @@
 #include "lituya/common/csv_writer.hpp"
 #include "lituya/common/input_error.hpp"
 #include "lituya/sweep/measures.hpp"
+#include "lituya/sweep/mesh_fingerprint.hpp"
 #include "lituya/sweep/progress.hpp"
 #include "lituya/sweep/sweep.hpp"
 
@@ -92,19 +91,16 @@ std::string repeat_key_of(const SweepResult& result) {
 }
 
 namespace {
-// {runs that made a mesh, different meshes among them}: case/geometry.vtu compared by its
-// length and a 64-bit hash of its bytes (one file in memory at a time: a fine mesh's file is
-// tens of megabytes, and a group may have 20 repeats).
+// {runs that made a mesh, different meshes among them}: the meshes of case/geometry.vtu
+// compared whatever their numbering (mesh_fingerprint.hpp).
 std::pair<int, int> count_meshes(const std::vector<const RunRecord*>& runs) {
-  std::set<std::pair<std::size_t, std::size_t>> meshes;
+  std::set<std::uint64_t> meshes;
   int meshed = 0;
-  for (const RunRecord* run : runs) {
-    std::ifstream file(run->folder / "case" / "geometry.vtu", std::ios::binary);
-    if (!file) continue;
-    ++meshed;
-    const std::string bytes(std::istreambuf_iterator<char>(file), {});
-    meshes.insert({bytes.size(), std::hash<std::string>{}(bytes)});
-  }
+  for (const RunRecord* run : runs)
+    if (const auto fingerprint = mesh_fingerprint(run->folder / "case" / "geometry.vtu")) {
+      ++meshed;
+      meshes.insert(*fingerprint);
+    }
   return {meshed, static_cast<int>(meshes.size())};
 }
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -12,8 +13,10 @@
 #include <nlohmann/json.hpp>
 
 #include "lituya/common/input_error.hpp"
+#include "lituya/common/vtu_writer.hpp"
 #include "lituya/sweep/convergence.hpp"
 #include "lituya/sweep/definition.hpp"
+#include "lituya/sweep/mesh_fingerprint.hpp"
 #include "lituya/sweep/sweep.hpp"
 #include "run_record.hpp"
 
@@ -208,10 +211,59 @@ TEST(Repeats, MeshRepeatsRunEachRepeatOnAnotherMesh) {
   fs::remove_all(folder);
 }
 
+// A unit square as two triangles, written as a case's geometry.vtu: `numbering` 0 as given,
+// 1 with the nodes and cells numbered in reverse (the same mesh), 2 with the diagonal flipped
+// (another mesh of the same nodes).
+void write_square_mesh(const fs::path& file, int numbering) {
+  std::vector<double> xyz = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  std::vector<std::int64_t> connectivity = {0, 1, 2, 0, 2, 3};
+  if (numbering == 1) {
+    xyz = {0, 1, 0, 1, 1, 0, 1, 0, 0, 0, 0, 0};  // node k is node 3 - k of numbering 0
+    connectivity = {3, 1, 0, 3, 2, 1};           // the cells swapped, each renumbered
+  } else if (numbering == 2) {
+    connectivity = {0, 1, 3, 1, 2, 3};
+  }
+  lituya::VtuWriter writer;
+  writer.set_points(xyz);
+  writer.set_cells(connectivity, {3, 6}, {5, 5});
+  writer.add_cell_data("group", std::vector<std::int32_t>{1, 1});
+  fs::create_directories(file.parent_path());
+  writer.write(file);
+}
+
+// The fingerprint sees the mesh, not its numbering: renumbered nodes and cells, or nodes moved
+// by rounding, give the same value, a flipped diagonal or a node moved by 1e-3 of the mesh
+// another; a missing file gives none.
+TEST(MeshFingerprint, IgnoresTheNumberingAndSeesTheCells) {
+  const fs::path folder = fs::temp_directory_path() / "lituya_sweep_mesh_fingerprint";
+  fs::remove_all(folder);
+  for (int numbering : {0, 1, 2}) write_square_mesh(folder / std::to_string(numbering), numbering);
+  const auto a = mesh_fingerprint(folder / "0");
+  ASSERT_TRUE(a.has_value());
+  EXPECT_EQ(mesh_fingerprint(folder / "1"), a);
+  EXPECT_NE(mesh_fingerprint(folder / "2"), a);
+  lituya::VtuWriter moved;
+  moved.set_points(std::vector<double>{0, 0, 0, 1, 0, 0, 1, 1.001, 0, 0, 1, 0});
+  moved.set_cells({0, 1, 2, 0, 2, 3}, {3, 6}, {5, 5});
+  moved.add_cell_data("group", std::vector<std::int32_t>{1, 1});
+  moved.write(folder / "moved");
+  EXPECT_NE(mesh_fingerprint(folder / "moved"), a);
+  // A rounding-level jitter (Case B's seeds 1 and 2 at 0.02 m moved a third of the nodes by
+  // about 1e-14 m) is the same mesh.
+  lituya::VtuWriter jittered;
+  jittered.set_points(std::vector<double>{0, 0, 0, 1 + 1e-14, 0, 0, 1, 1 - 2e-14, 0, 0, 1, 0});
+  jittered.set_cells({0, 1, 2, 0, 2, 3}, {3, 6}, {5, 5});
+  jittered.add_cell_data("group", std::vector<std::int32_t>{1, 1});
+  jittered.write(folder / "jittered");
+  EXPECT_EQ(mesh_fingerprint(folder / "jittered"), a);
+  EXPECT_FALSE(mesh_fingerprint(folder / "missing").has_value());
+  fs::remove_all(folder);
+}
+
 // Seeds that give the same mesh are one sample, not several: the summary counts the different
-// case/geometry.vtu of each group, and the report names the group whose runs shared a mesh.
-// Here the group h=0.02 has three runs on two meshes (seeds 1 and 3 the same file), the group
-// h=0.01 two runs on two meshes, and a run that never meshed is not counted.
+// meshes of each group, and the report names the group whose runs shared a mesh. Here the
+// group h=0.02 has three runs on two meshes (seeds 1 and 3 the same mesh numbered otherwise),
+// the group h=0.01 two runs on two meshes, and a run that never meshed is not counted.
 TEST(Repeats, MeshRepeatsOnTheSameMeshAreNamed) {
   const fs::path folder = fs::temp_directory_path() / "lituya_sweep_repeats_same_mesh";
   fs::remove_all(folder);
@@ -220,16 +272,16 @@ TEST(Repeats, MeshRepeatsOnTheSameMeshAreNamed) {
   result.labels = {"cell_size", "seed"};
   result.measures = {"front"};
   result.repeat_parameter = 1;
-  const std::vector<std::pair<std::vector<std::string>, std::string>> runs = {
-      {{"0.02", "1"}, "mesh A"}, {{"0.02", "2"}, "mesh B"}, {{"0.02", "3"}, "mesh A"},
-      {{"0.02", "4"}, ""},       {{"0.01", "1"}, "mesh C"}, {{"0.01", "2"}, "mesh D"}};
-  for (const auto& [values, mesh] : runs) {
+  // {values, numbering of the square mesh (-1: no mesh)}
+  const std::vector<std::pair<std::vector<std::string>, int>> runs = {
+      {{"0.02", "1"}, 0},  {{"0.02", "2"}, 2}, {{"0.02", "3"}, 1},
+      {{"0.02", "4"}, -1}, {{"0.01", "1"}, 0}, {{"0.01", "2"}, 2}};
+  for (const auto& [values, numbering] : runs) {
     result.runs.push_back(run(static_cast<int>(result.runs.size()) + 1, values,
                               {1.0 + 0.1 * static_cast<double>(result.runs.size())}));
     result.runs.back().folder = folder / ("run_" + std::to_string(result.runs.size()));
-    if (mesh.empty()) continue;
-    fs::create_directories(result.runs.back().folder / "case");
-    std::ofstream(result.runs.back().folder / "case" / "geometry.vtu") << mesh;
+    if (numbering >= 0)
+      write_square_mesh(result.runs.back().folder / "case" / "geometry.vtu", numbering);
   }
   const std::vector<RepeatSummaryRow> rows = repeat_summary(result);
   ASSERT_EQ(rows.size(), 2u);

@@ -81,7 +81,8 @@ struct RepeatSummaryRow {
   std::string measure;  // as in sweep.csv
   Spread spread;
   // Mesh repeats: of the group's runs that made a mesh (case/geometry.vtu), how many, and how
-  // many different meshes they had (the files' lengths and hashes). Both 0 for Courant repeats.
+  // many different meshes they had, whatever their numbering (mesh_fingerprint.hpp). Both 0 for
+  // Courant repeats.
   int meshed_runs = 0, meshes = 0;
 };
 
