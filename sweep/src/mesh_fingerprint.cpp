@@ -36,32 +36,32 @@ std::optional<std::uint64_t> mesh_fingerprint(const std::filesystem::path& geome
       std::max({bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]});
   const double step = extent > 0 ? 1e-7 * extent : 1.0;
 
-  // Each cell as a row of integers: its group, then its nodes' rounded x, y, z in sorted order.
+  // Each cell as a row of integers: its group, then its nodes' rounded x, y, z in sorted order
+  // (Lituya's cells are triangles and tetrahedra: at most four nodes; a triangle's fourth is
+  // zeros, sorted in with the others, the same for every triangle).
   using Node = std::array<long long, 3>;
-  std::vector<std::vector<long long>> cells(static_cast<std::size_t>(grid->GetNumberOfCells()));
+  using Row = std::array<long long, 1 + 4 * 3>;
+  std::vector<Row> cells(static_cast<std::size_t>(grid->GetNumberOfCells()));
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
     grid->GetCellPoints(c, ids);
-    std::vector<Node> nodes(static_cast<std::size_t>(ids->GetNumberOfIds()));
+    if (ids->GetNumberOfIds() > 4) return std::nullopt;
+    std::array<Node, 4> nodes{};
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) {
       double x[3];
       grid->GetPoint(ids->GetId(k), x);
       for (int d = 0; d < 3; ++d) nodes[static_cast<std::size_t>(k)][d] = std::llround(x[d] / step);
     }
-    std::sort(nodes.begin(), nodes.end());
-    std::vector<long long>& row = cells[static_cast<std::size_t>(c)];
-    row.push_back(group ? std::llround(group->GetComponent(c, 0)) : 0);
-    for (const Node& node : nodes) row.insert(row.end(), node.begin(), node.end());
+    std::sort(nodes.begin(), nodes.end());  // a triangle's unused fourth node is all zeros
+    Row& row = cells[static_cast<std::size_t>(c)];
+    row.fill(0);
+    row[0] = group ? std::llround(group->GetComponent(c, 0)) : 0;
+    for (std::size_t k = 0; k < 4; ++k)
+      std::copy(nodes[k].begin(), nodes[k].end(), row.begin() + 1 + 3 * static_cast<long>(k));
   }
   std::sort(cells.begin(), cells.end());
-  Fnv1a64 hash;
-  for (const std::vector<long long>& row : cells) {
-    const long long count = static_cast<long long>(row.size());
-    hash.add(std::string_view(reinterpret_cast<const char*>(&count), sizeof count));
-    hash.add(std::string_view(reinterpret_cast<const char*>(row.data()),
-                              row.size() * sizeof(long long)));
-  }
-  return hash.value();
+  return fnv1a64(
+      std::string_view(reinterpret_cast<const char*>(cells.data()), cells.size() * sizeof(Row)));
 }
 
 }  // namespace lituya::sweep

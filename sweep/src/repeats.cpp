@@ -91,41 +91,54 @@ std::string repeat_key_of(const SweepResult& result) {
 }
 
 namespace {
-// {runs that made a mesh, different meshes among them}: the meshes of case/geometry.vtu
-// compared whatever their numbering (mesh_fingerprint.hpp).
-std::pair<int, int> count_meshes(const std::vector<const RunRecord*>& runs) {
-  std::set<std::uint64_t> meshes;
-  int meshed = 0;
-  for (const RunRecord* run : runs)
-    if (const auto fingerprint = mesh_fingerprint(run->folder / "case" / "geometry.vtu")) {
-      ++meshed;
-      meshes.insert(*fingerprint);
-    }
-  return {meshed, static_cast<int>(meshes.size())};
+// The runs of each combination of the other keys ("key=value ..."), the groups in run order.
+std::vector<std::pair<std::string, std::vector<const RunRecord*>>> runs_by_group(
+    const SweepResult& result) {
+  std::vector<std::pair<std::string, std::vector<const RunRecord*>>> groups;
+  std::map<std::string, std::size_t> index;
+  for (const RunRecord& run : result.runs) {
+    const std::string group = group_of(result, run);
+    const auto [at, added] = index.try_emplace(group, groups.size());
+    if (added) groups.push_back({group, {}});
+    groups[at->second].second.push_back(&run);
+  }
+  return groups;
 }
 }  // namespace
 
 std::vector<RepeatSummaryRow> repeat_summary(const SweepResult& result) {
   if (result.repeat_parameter < 0) return {};
-  const bool by_mesh = repeat_key_of(result) == kMeshSeedKey;
-  std::vector<std::string> order;
-  std::map<std::string, std::vector<const RunRecord*>> groups;
-  for (const RunRecord& run : result.runs) {
-    const std::string group = group_of(result, run);
-    if (!groups.count(group)) order.push_back(group);
-    groups[group].push_back(&run);
-  }
   std::vector<RepeatSummaryRow> rows;
-  for (const std::string& group : order) {
-    const auto [meshed_runs, meshes] = by_mesh ? count_meshes(groups[group]) : std::pair{0, 0};
+  for (const auto& [group, runs] : runs_by_group(result))
     for (std::size_t m = 0; m < result.measures.size(); ++m) {
       std::vector<double> values;
-      for (const RunRecord* run : groups[group])
+      for (const RunRecord* run : runs)
         values.push_back(run->status == RunStatus::kOk ? run->measures[m] : NAN);
-      rows.push_back({group, result.measures[m], spread_of(values), meshed_runs, meshes});
+      rows.push_back({group, result.measures[m], spread_of(values)});
     }
-  }
   return rows;
+}
+
+std::string format_shared_meshes(const SweepResult& result) {
+  if (repeat_key_of(result) != kMeshSeedKey) return "";
+  std::string text;
+  for (const auto& [group, runs] : runs_by_group(result)) {
+    std::set<std::uint64_t> meshes;
+    int meshed = 0;  // runs that made a mesh
+    for (const RunRecord* run : runs)
+      if (const auto fingerprint = mesh_fingerprint(run->folder / "case" / "geometry.vtu")) {
+        ++meshed;
+        meshes.insert(*fingerprint);
+      }
+    const int different = static_cast<int>(meshes.size());
+    if (different >= meshed) continue;
+    text += (group.empty() ? std::string("the repeats") : "the repeats with " + group) + ": " +
+            std::to_string(meshed) + " runs on " + std::to_string(different) +
+            (different == 1 ? " mesh" : " different meshes") +
+            " (gmsh's seeds did not change this geometry's triangulation); the spread "
+            "understates the scatter over meshes: vary mesh.cell_size slightly instead\n";
+  }
+  return text;
 }
 
 void write_repeat_table(const std::filesystem::path& file,
@@ -169,20 +182,7 @@ std::string format_repeats(const std::vector<RepeatSummaryRow>& rows,
             "cell size; the spread is the reading's scatter over meshes"
           : "the last stage's Courant number changed by 2e-4 of itself per repeat; the spread is "
             "the reading's own scatter";
-  std::string text = "repeats (" + changed + "):\n" + align_columns(lines);
-  // Equal meshes from two seeds are possible (gmsh meshes some simple geometries the same):
-  // their runs are one sample of the mesh, not several.
-  if (repeat_key != kMeshSeedKey) return text;
-  std::set<std::string> reported;
-  for (const RepeatSummaryRow& row : rows) {
-    if (row.meshes >= row.meshed_runs || !reported.insert(row.group).second) continue;
-    text += (row.group.empty() ? std::string("the repeats") : "the repeats with " + row.group) +
-            ": " + std::to_string(row.meshed_runs) + " runs on " + std::to_string(row.meshes) +
-            (row.meshes == 1 ? " mesh" : " different meshes") +
-            " (gmsh's seeds did not change this geometry's triangulation); the spread "
-            "understates the scatter over meshes: vary mesh.cell_size slightly instead\n";
-  }
-  return text;
+  return "repeats (" + changed + "):\n" + align_columns(lines);
 }
 
 }  // namespace lituya::sweep

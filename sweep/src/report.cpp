@@ -178,6 +178,7 @@ std::string format_report(const MergedSweep& merged, const std::vector<double>& 
     for (const RunSource& s : merged.sources)
       out << "runs " << s.first << "-" << s.last << ": " << s.folder.string() << "\n";
   out << format_table(result) << format_repeats(repeat_summary(result), repeat_key_of(result))
+      << format_shared_meshes(result)
       << format_convergence(rows, /*chosen_sizes=*/!cell_sizes.empty());
   if (convergence) *convergence = std::move(rows);
   return out.str();

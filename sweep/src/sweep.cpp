@@ -1144,7 +1144,7 @@ SweepResult run_sweep(const SweepDefinition& user_definition, const SweepOptions
                       << " runs started from the end of stages they share with another run "
                          "(--no-reuse runs every run whole)\n";
     *options.report << format_repeats(repeats, repeat_key_of(result))
-                    << format_convergence(convergence);
+                    << format_shared_meshes(result) << format_convergence(convergence);
     *options.report << "table: " << result.table.string() << "\n"
                     << "json:  " << result.summary.string() << "\n";
     if (result.plotted) *options.report << "plot:  " << result.plot.string() << "\n";

@@ -23,7 +23,8 @@
 namespace lituya::sweep {
 
 // The fingerprint of the mesh in `geometry_vtu` (a case's geometry.vtu); nullopt when the file
-// is missing or cannot be read.
+// is missing or cannot be read, or holds a cell of more than four nodes (Lituya writes
+// triangles and tetrahedra only).
 std::optional<std::uint64_t> mesh_fingerprint(const std::filesystem::path& geometry_vtu);
 
 }  // namespace lituya::sweep

@@ -80,10 +80,6 @@ struct RepeatSummaryRow {
   std::string group;    // "key=value ..." of the other keys, empty when there are none
   std::string measure;  // as in sweep.csv
   Spread spread;
-  // Mesh repeats: of the group's runs that made a mesh (case/geometry.vtu), how many, and how
-  // many different meshes they had, whatever their numbering (mesh_fingerprint.hpp). Both 0 for
-  // Courant repeats.
-  int meshed_runs = 0, meshes = 0;
 };
 
 // The sweep's repeat key, empty without repeats.
@@ -98,10 +94,17 @@ void write_repeat_table(const std::filesystem::path& file,
                         const std::vector<RepeatSummaryRow>& rows);
 
 // The table printed at the end of the sweep's report; `repeat_key` (the sweep's, as in
-// SweepResult::parameters) says what the repeats changed. For mesh repeats it names every
-// group whose seeds gave fewer meshes than runs (gmsh meshes some simple geometries the same
-// for several seeds): its spread then understates the scatter over meshes, or is zero.
+// SweepResult::parameters) says what the repeats changed.
 std::string format_repeats(const std::vector<RepeatSummaryRow>& rows,
                            const std::string& repeat_key);
+
+// For mesh repeats, one line for each combination of the other keys whose runs had fewer
+// different meshes than runs that made one (case/geometry.vtu, compared whatever the
+// numbering: mesh_fingerprint.hpp), e.g. "the repeats with cell_size=0.02: 3 runs on 2
+// different meshes (...)": gmsh meshes some geometries the same for several seeds, and the
+// spread of such a group understates the scatter over meshes. Empty for Courant repeats and
+// when every run had its own mesh. Reads the meshes, so it is called for the report's text
+// only (the tables need no mesh).
+std::string format_shared_meshes(const SweepResult& result);
 
 }  // namespace lituya::sweep
