@@ -213,6 +213,7 @@ SolverSettings read_solver_settings(const TomlTable& t) {
           ? PorePressureMeasure::kSoil
           : PorePressureMeasure::kWater;
   s.free_water_cell_volume = t.boolean_or("free_water_cell_volume", s.free_water_cell_volume);
+  s.crossed_pressure_filter = t.boolean_or("crossed_pressure_filter", s.crossed_pressure_filter);
   s.liquid_advection = t.choice_or("liquid_advection", {"velocity", "flux"}, "velocity") == "flux"
                            ? LiquidAdvection::kFlux
                            : LiquidAdvection::kVelocity;
@@ -422,6 +423,7 @@ toml::table to_toml(const SolverSettings& s) {
                 {"volumetric_smoothing", s.volumetric_smoothing},
                 {"pore_volume_projection", s.pore_volume_projection},
                 {"free_water_cell_volume", s.free_water_cell_volume},
+                {"crossed_pressure_filter", s.crossed_pressure_filter},
                 {"liquid_bulk_viscosity", s.liquid_bulk_viscosity},
                 {"checkpoint_interval_minutes", s.checkpoint_interval_minutes}};
   // Only the blend settings the scene gave: absent ones keep their automatic defaults.

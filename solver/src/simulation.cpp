@@ -136,6 +136,9 @@ void Simulation<dim>::resolve_pressure_projection() {
   if (settings.liquid_advection == LiquidAdvection::kFlux)
     line << "; liquid_advection = \"flux\": the liquid points move with the grains plus the "
             "water's relative volume flux over their cell's pores";
+  if (!crossed_quadrangles_.empty())
+    line << "; crossed mesh: the free pressure pattern of its " << crossed_quadrangles_.cells.size()
+         << " quadrangles is removed each step (crossed_pressure_filter)";
   projection_description_ = line.str();
 }
 

@@ -177,6 +177,9 @@ void Simulation<dim>::setup_liquid() {
   liquid_flux_divergence_.assign(liquid.size(), 0.0);
   smoothed_flux_divergence_.assign(liquid.size(), 0.0);
   nodal_pressure_ = description_.solver.liquid_pressure == LiquidPressure::kNodalFit;
+  if constexpr (dim == 2)
+    if (description_.solver.crossed_pressure_filter)
+      crossed_quadrangles_ = find_crossed_quadrangles(mesh_);
   // Sponge zones: sigma at each node once, the strongest zone where two overlap. A node is
   // damped by its own position; the water in a cell sees the linear blend of its nodes.
   if (!description_.sponges.empty()) {
@@ -873,6 +876,19 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
     }
   }
   next_time_step_ = dt_next;
+  // A crossed mesh: the pressure pattern no force acts on, removed (crossed_quadrangles.cpp),
+  // and the changed points' volumes follow eq. (7) again.
+  if (!crossed_quadrangles_.empty() &&
+      remove_free_pressure_pattern(crossed_quadrangles_, liquid.cell, water_scale, liquid.volume,
+                                   liquid.pressure) > 0) {
+#pragma omp parallel for num_threads(threads_) schedule(static)
+    for (std::size_t q = 0; q < n_liquid; ++q) {
+      if (crossed_quadrangles_.cell_quadrangle[liquid.cell[q]] < 0) continue;
+      const MaterialModelData& water = materials_[liquid.material[q]];
+      liquid.volume[q] =
+          liquid.mass[q] / (water.liquid_density * (1.0 + liquid.pressure[q] / water.bulk_modulus));
+    }
+  }
   if (fault.point >= 0) {
     const std::size_t q = static_cast<std::size_t>(fault.point);
     std::ostringstream m;

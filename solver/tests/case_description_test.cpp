@@ -351,6 +351,21 @@ TEST(CaseDescription, FreeWaterCellVolumeIsOnUnlessSetAndSurvivesTheWrittenCase)
   EXPECT_NE(msg.find("free_water_cell_volume"), std::string::npos) << msg;
 }
 
+TEST(CaseDescription, CrossedPressureFilterIsOnUnlessSetAndSurvivesTheWrittenCase) {
+  EXPECT_TRUE(SolverSettings{}.crossed_pressure_filter);
+  SolverSettings s;
+  s.crossed_pressure_filter = false;
+  toml::table root;
+  root.insert("solver", to_toml(s));
+  EXPECT_FALSE(read_solver_settings(*written_and_read(root, "lituya_crossed_pressure_filter.toml")
+                                         .root()
+                                         .optional_table("solver"))
+                   .crossed_pressure_filter);
+  const std::string msg = error_reading_solver_settings("[solver]\ncrossed_pressure_filter = 1\n");
+  EXPECT_NE(msg.find(":2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("crossed_pressure_filter"), std::string::npos) << msg;
+}
+
 // Two choices of the water's treatment: each default, and the other value written into a case
 // and read back (a wrong word names its line and key).
 TEST(CaseDescription, LiquidAdvectionIsVelocityOrFluxAndLandingIsMergeOrKeepVelocity) {

@@ -159,6 +159,11 @@ struct SolverSettings {
   // (verification/standing_wave). On by default since December 2026 (stop 35); false gives
   // back the points' own volumes, under which water in motion settles.
   bool free_water_cell_volume = true;
+  // On a crossed mesh ([mesh] crossed = true), each step removes from every quadrangle the one
+  // pattern of the water's pressure over its four triangles that exerts no nodal force
+  // (crossed_quadrangles.hpp; scientific manual 10.4). Carried in by points that cross cells,
+  // it grew unchecked and threw jets out of Case B's impact zone. No effect on a plain mesh.
+  bool crossed_pressure_filter = true;
   LiquidAdvection liquid_advection = LiquidAdvection::kVelocity;
   // Water in free flight (spray, a sheet off a crest; water_in_flight.hpp) that lands on a
   // body of water: kMerge gives each landing point the velocity of the water it lands in and

@@ -28,6 +28,7 @@
 #include "lituya/solver/boundary_conditions.hpp"
 #include "lituya/solver/case_description.hpp"
 #include "lituya/solver/conjugate_gradient.hpp"
+#include "lituya/solver/crossed_quadrangles.hpp"
 #include "lituya/solver/liquid_points.hpp"
 #include "lituya/solver/material_points.hpp"
 #include "lituya/solver/mesh.hpp"
@@ -365,6 +366,9 @@ class Simulation {
   std::vector<double> liquid_flux_divergence_;  // per liquid point, div((1-n) v_s + n v_w)
   std::vector<double> smoothed_flux_divergence_;
   bool nodal_pressure_ = false;
+  // The quadrangles of a crossed mesh, whose free pressure pattern each step removes
+  // (crossed_quadrangles.hpp); empty on a plain mesh, in 3D and with crossed_pressure_filter off.
+  CrossedQuadrangles crossed_quadrangles_;
   std::vector<double> node_fit_alpha_;
   std::vector<double> node_fitted_pressure_;  // a_i of the fit, nodal_fit only
   mutable std::vector<double> acting_pressure_;
