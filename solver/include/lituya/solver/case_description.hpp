@@ -161,8 +161,8 @@ struct SolverSettings {
   bool free_water_cell_volume = true;
   // On a crossed mesh ([mesh] crossed = true), each step removes from every quadrangle the one
   // pattern of the water's pressure over its four triangles that exerts no nodal force
-  // (crossed_quadrangles.hpp; scientific manual 10.4). Carried in by points that cross cells,
-  // it grew unchecked and threw jets out of Case B's impact zone. No effect on a plain mesh.
+  // (crossed_quadrangles.hpp; scientific manual, section 3). Carried in by points that cross
+  // cells, it grew unchecked and fed the bursts of Case B's deposit. No effect on a plain mesh.
   bool crossed_pressure_filter = true;
   LiquidAdvection liquid_advection = LiquidAdvection::kVelocity;
   // Water in free flight (spray, a sheet off a crest; water_in_flight.hpp) that lands on a
