@@ -335,35 +335,29 @@ TEST(CaseDescription, PorePressureCellMeasureIsSoilOrWater) {
       PorePressureMeasure::kWater);
 }
 
-TEST(CaseDescription, FreeWaterCellVolumeIsOnUnlessSetAndSurvivesTheWrittenCase) {
-  EXPECT_TRUE(SolverSettings{}.free_water_cell_volume);
+// A boolean [solver] key that is on unless set: `false` survives the written case, and a value
+// that is not a boolean is an error naming its line and the key.
+void expect_switch_on_by_default(const std::string& key, bool SolverSettings::*member) {
+  EXPECT_TRUE(SolverSettings{}.*member);
   SolverSettings s;
-  s.free_water_cell_volume = false;
+  s.*member = false;
   toml::table root;
   root.insert("solver", to_toml(s));
-  EXPECT_FALSE(read_solver_settings(*written_and_read(root, "lituya_free_water_cell_volume.toml")
-                                         .root()
-                                         .optional_table("solver"))
-                   .free_water_cell_volume);
-  const std::string msg =
-      error_reading_solver_settings("[solver]\nfree_water_cell_volume = \"yes\"\n");
+  EXPECT_FALSE(
+      read_solver_settings(
+          *written_and_read(root, "lituya_" + key + ".toml").root().optional_table("solver")).*
+      member);
+  const std::string msg = error_reading_solver_settings("[solver]\n" + key + " = \"yes\"\n");
   EXPECT_NE(msg.find(":2"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("free_water_cell_volume"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(key), std::string::npos) << msg;
+}
+
+TEST(CaseDescription, FreeWaterCellVolumeIsOnUnlessSetAndSurvivesTheWrittenCase) {
+  expect_switch_on_by_default("free_water_cell_volume", &SolverSettings::free_water_cell_volume);
 }
 
 TEST(CaseDescription, CrossedPressureFilterIsOnUnlessSetAndSurvivesTheWrittenCase) {
-  EXPECT_TRUE(SolverSettings{}.crossed_pressure_filter);
-  SolverSettings s;
-  s.crossed_pressure_filter = false;
-  toml::table root;
-  root.insert("solver", to_toml(s));
-  EXPECT_FALSE(read_solver_settings(*written_and_read(root, "lituya_crossed_pressure_filter.toml")
-                                         .root()
-                                         .optional_table("solver"))
-                   .crossed_pressure_filter);
-  const std::string msg = error_reading_solver_settings("[solver]\ncrossed_pressure_filter = 1\n");
-  EXPECT_NE(msg.find(":2"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("crossed_pressure_filter"), std::string::npos) << msg;
+  expect_switch_on_by_default("crossed_pressure_filter", &SolverSettings::crossed_pressure_filter);
 }
 
 // Two choices of the water's treatment: each default, and the other value written into a case
