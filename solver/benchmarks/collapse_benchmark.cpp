@@ -5,9 +5,11 @@
 // and liquid points both count as points).
 //
 //   lituya_benchmark [--dim 2|3] [--segments 5] [--steps 50] [--threads 1] [--cell 0.005]
-//                    [--water 0|1] [--nodal-fit 0|1] [--landing 1|0]
+//                    [--water 0|1] [--nodal-fit 0|1] [--landing 1|0] [--crossed-filter 1|0]
 // --nodal-fit 1 runs the water with [solver] liquid_pressure = "nodal_fit"; --landing 0 with
-// liquid_landing = "keep_velocity" (no search for water in free flight; the cost of that search).
+// liquid_landing = "keep_velocity" (no search for water in free flight; the cost of that search);
+// --crossed-filter 0 with crossed_pressure_filter = false (the box mesh's alternating diagonals
+// make it a crossed mesh: every other node is the centre of four cells; the cost of the filter).
 #include <omp.h>
 
 #include <algorithm>
@@ -41,7 +43,7 @@ Material sand() {
 
 template <int dim>
 void run(int segments, int steps, int threads, double cell, bool with_water, bool nodal_fit,
-         bool landing) {
+         bool landing, bool crossed_filter) {
   const std::size_t memory_before = lituya::current_memory_bytes();
   BoxScene<dim> scene;
   using Vec = Eigen::Matrix<double, dim, 1>;
@@ -62,6 +64,7 @@ void run(int segments, int steps, int threads, double cell, bool with_water, boo
     scene.water = paper_water();
     if (nodal_fit) scene.solver.liquid_pressure = LiquidPressure::kNodalFit;
     if (!landing) scene.solver.liquid_landing = LiquidLanding::kKeepVelocity;
+    scene.solver.crossed_pressure_filter = crossed_filter;
     scene.water_min = Vec::Zero();
     scene.water_max = scene.domain_size;
     scene.water_max(1) = 0.3;
@@ -108,8 +111,10 @@ void run(int segments, int steps, int threads, double cell, bool with_water, boo
 int main(int argc, char** argv) {
   const char* usage =
       "usage: lituya_benchmark [--dim 2|3] [--segments 5] [--steps 50] [--threads 1]\n"
-      "                        [--cell 0.005] [--water 0|1] [--nodal-fit 0|1] [--landing 1|0]\n";
-  int dim = 2, segments = 5, steps = 50, threads = 1, water = 0, nodal_fit = 0, landing = 1;
+      "                        [--cell 0.005] [--water 0|1] [--nodal-fit 0|1] [--landing 1|0]\n"
+      "                        [--crossed-filter 1|0]\n";
+  int dim = 2, segments = 5, steps = 50, threads = 1, water = 0, nodal_fit = 0, landing = 1,
+      crossed_filter = 1;
   double cell = -1;
   for (int i = 1; i < argc; i += 2) {
     if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
@@ -119,7 +124,7 @@ int main(int argc, char** argv) {
     // Every option takes a value: a lone or unknown flag is a usage error, not a run.
     bool known = false;
     for (const char* name : {"--dim", "--segments", "--steps", "--threads", "--water", "--cell",
-                             "--nodal-fit", "--landing"})
+                             "--nodal-fit", "--landing", "--crossed-filter"})
       known = known || !std::strcmp(argv[i], name);
     if (!known) {
       std::fprintf(stderr, "unknown option %s\n%s", argv[i], usage);
@@ -143,14 +148,16 @@ int main(int argc, char** argv) {
       nodal_fit = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--landing"))
       landing = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--crossed-filter"))
+      crossed_filter = std::atoi(argv[i + 1]);
     else
       cell = std::atof(argv[i + 1]);
   }
   if (dim == 2)
     run<2>(segments, steps, threads, cell > 0 ? cell : 0.005, water != 0, nodal_fit != 0,
-           landing != 0);
+           landing != 0, crossed_filter != 0);
   else
     run<3>(segments, steps, threads, cell > 0 ? cell : 0.02, water != 0, nodal_fit != 0,
-           landing != 0);
+           landing != 0, crossed_filter != 0);
   return 0;
 }
