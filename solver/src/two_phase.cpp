@@ -876,19 +876,6 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
     }
   }
   next_time_step_ = dt_next;
-  // A crossed mesh: the pressure pattern no force acts on, removed (crossed_quadrangles.cpp),
-  // and the changed points' volumes follow eq. (7) again.
-  if (!crossed_quadrangles_.empty() &&
-      remove_free_pressure_pattern(crossed_quadrangles_, liquid.cell, water_scale, liquid.volume,
-                                   liquid.pressure) > 0) {
-#pragma omp parallel for num_threads(threads_) schedule(static)
-    for (std::size_t q = 0; q < n_liquid; ++q) {
-      if (crossed_quadrangles_.cell_quadrangle[liquid.cell[q]] < 0) continue;
-      const MaterialModelData& water = materials_[liquid.material[q]];
-      liquid.volume[q] =
-          liquid.mass[q] / (water.liquid_density * (1.0 + liquid.pressure[q] / water.bulk_modulus));
-    }
-  }
   if (fault.point >= 0) {
     const std::size_t q = static_cast<std::size_t>(fault.point);
     std::ostringstream m;
@@ -906,6 +893,20 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
                           "try a shorter [solver] liquid_pic_damping_time, e.g. a tenth of the one "
                           "in output/log.txt, or a smaller Courant number");
     throw RunError(m.str());
+  }
+  // A crossed mesh: the pressure pattern no force acts on, removed (crossed_quadrangles.cpp),
+  // and the changed points' volumes follow eq. (7) again. After the fault check: every point
+  // is then in a cell.
+  if (!crossed_quadrangles_.empty() &&
+      remove_free_pressure_pattern(crossed_quadrangles_, liquid.cell, water_scale, liquid.volume,
+                                   liquid.pressure) > 0) {
+#pragma omp parallel for num_threads(threads_) schedule(static)
+    for (std::size_t q = 0; q < n_liquid; ++q) {
+      if (crossed_quadrangles_.cell_quadrangle[liquid.cell[q]] < 0) continue;
+      const MaterialModelData& water = materials_[liquid.material[q]];
+      liquid.volume[q] =
+          liquid.mass[q] / (water.liquid_density * (1.0 + liquid.pressure[q] / water.bulk_modulus));
+    }
   }
 }
 
