@@ -96,9 +96,13 @@ std::size_t remove_free_pressure_pattern(const CrossedQuadrangles& quadrangles,
                                          const std::vector<int>& point_cell,
                                          const std::vector<double>& cell_scale,
                                          const std::vector<double>& volume,
-                                         std::vector<double>& pressure) {
+                                         std::vector<double>& pressure,
+                                         FreePatternScratch& scratch) {
   const std::size_t n_cells = quadrangles.cell_quadrangle.size();
-  std::vector<double> sum(n_cells, 0.0), weight(n_cells, 0.0);
+  std::vector<double>&sum = scratch.sum, &weight = scratch.weight, &change = scratch.change;
+  sum.assign(n_cells, 0.0);
+  weight.assign(n_cells, 0.0);
+  change.assign(n_cells, 0.0);
   for (std::size_t p = 0; p < point_cell.size(); ++p) {
     const int c = point_cell[p];
     if (quadrangles.cell_quadrangle[c] < 0) continue;
@@ -108,7 +112,6 @@ std::size_t remove_free_pressure_pattern(const CrossedQuadrangles& quadrangles,
   }
   // Per quadrangle the pattern's amplitude c . S (c is a unit vector); per cell the pressure
   // change that removes its part, -amplitude c_T / (sum of scale_T V over the cell's points).
-  std::vector<double> change(n_cells, 0.0);
   for (std::size_t m = 0; m < quadrangles.cells.size(); ++m) {
     double amplitude = 0;
     bool filled = true;

@@ -224,8 +224,8 @@ int Simulation<dim>::project_pore_water_volume() {
     water_.shape[q] = shape;
     liquid.pressure[q] = std::max(0.0, liquid.pressure[q] + pressure_gradient.dot(u));
     const MaterialModelData& water = materials_[liquid.material[q]];
-    liquid.volume[q] =
-        liquid.mass[q] / (water.liquid_density * (1.0 + liquid.pressure[q] / water.bulk_modulus));
+    liquid.volume[q] = detail::water_volume(liquid.mass[q], water.liquid_density,
+                                            liquid.pressure[q], water.bulk_modulus);
   }
   return iteration;
 }

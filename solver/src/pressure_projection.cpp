@@ -37,6 +37,7 @@
 
 #include "lituya/solver/conjugate_gradient.hpp"
 #include "lituya/solver/simulation.hpp"
+#include "simulation_kernels.hpp"
 
 namespace lituya::solver {
 
@@ -114,8 +115,8 @@ int Simulation<dim>::project_liquid_pressure() {
   for (std::size_t q = 0; q < n_liquid; ++q) {
     const MaterialModelData& water = materials_[liquid.material[q]];
     liquid.pressure[q] = std::max(0.0, s.point_values[q]);
-    liquid.volume[q] =
-        liquid.mass[q] / (water.liquid_density * (1.0 + liquid.pressure[q] / water.bulk_modulus));
+    liquid.volume[q] = detail::water_volume(liquid.mass[q], water.liquid_density,
+                                            liquid.pressure[q], water.bulk_modulus);
   }
   return iteration;
 }

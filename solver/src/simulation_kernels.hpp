@@ -112,4 +112,9 @@ inline double liquid_signal_speed(double beta, double density, double wave_speed
          2.0 * (viscosity + liquid_bulk_viscosity(beta, density, wave_speed, h)) / (density * h);
 }
 
+// Eq. (7), rho_w = rho_w0 (1 + p / K_w): the volume of a water point of `mass` at pressure p.
+inline double water_volume(double mass, double density, double pressure, double bulk_modulus) {
+  return mass / (density * (1.0 + pressure / bulk_modulus));
+}
+
 }  // namespace lituya::solver::detail

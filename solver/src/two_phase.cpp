@@ -863,7 +863,7 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
     else
       p = std::max(0.0, p - water.bulk_modulus / n * divergence[q] * dt);
     // Water volume from eq. (7): rho_w = rho_w0 (1 + p / K_w).
-    liquid.volume[q] = liquid.mass[q] / (water.liquid_density * (1.0 + p / water.bulk_modulus));
+    liquid.volume[q] = water_volume(liquid.mass[q], water.liquid_density, p, water.bulk_modulus);
     const double speed = liquid.velocity[q].norm();
     const PointFault kind = relocate(water_, mesh_, q, speed, std::isfinite(p), max_velocity_);
     if (kind != PointFault::kNone) {
@@ -899,13 +899,13 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
   // is then in a cell.
   if (!crossed_quadrangles_.empty() &&
       remove_free_pressure_pattern(crossed_quadrangles_, liquid.cell, water_scale, liquid.volume,
-                                   liquid.pressure) > 0) {
+                                   liquid.pressure, free_pattern_scratch_) > 0) {
 #pragma omp parallel for num_threads(threads_) schedule(static)
     for (std::size_t q = 0; q < n_liquid; ++q) {
       if (crossed_quadrangles_.cell_quadrangle[liquid.cell[q]] < 0) continue;
       const MaterialModelData& water = materials_[liquid.material[q]];
-      liquid.volume[q] =
-          liquid.mass[q] / (water.liquid_density * (1.0 + liquid.pressure[q] / water.bulk_modulus));
+      liquid.volume[q] = water_volume(liquid.mass[q], water.liquid_density, liquid.pressure[q],
+                                      water.bulk_modulus);
     }
   }
 }

@@ -118,7 +118,9 @@ TEST(CrossedQuadrangles, RemovingThePatternChangesNoForce) {
     return s;
   };
   const std::vector<Vec> before = nodal_force(mesh, cell_sums(pressure));
-  const std::size_t changed = remove_free_pressure_pattern(q, point_cell, scale, volume, pressure);
+  FreePatternScratch scratch;
+  const std::size_t changed =
+      remove_free_pressure_pattern(q, point_cell, scale, volume, pressure, scratch);
   EXPECT_EQ(changed, 24u);  // three full quadrangles, four cells, two points each
   const std::vector<Vec> after = nodal_force(mesh, cell_sums(pressure));
   for (std::size_t i = 0; i < mesh.node_count(); ++i)
@@ -146,7 +148,7 @@ TEST(CrossedQuadrangles, RemovingThePatternChangesNoForce) {
   }
   // A second pass finds nothing more to take.
   const std::vector<double> once = pressure;
-  remove_free_pressure_pattern(q, point_cell, scale, volume, pressure);
+  remove_free_pressure_pattern(q, point_cell, scale, volume, pressure, scratch);
   for (std::size_t k = 0; k < pressure.size(); ++k) EXPECT_NEAR(pressure[k], once[k], 1e-9);
 }
 

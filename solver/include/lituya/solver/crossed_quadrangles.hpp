@@ -1,7 +1,7 @@
 #pragma once
 // The quadrangles of a crossed mesh ([mesh] crossed = true: each quadrangle cut into four
 // triangles where its diagonals cross) and the one pattern of water pressure over each of them
-// that exerts no nodal force (scientific manual 10.4, "Crossed meshes: the free pattern").
+// that exerts no nodal force (scientific manual, section 3, "The free pressure pattern").
 #include <array>
 #include <vector>
 
@@ -15,6 +15,11 @@ struct CrossedQuadrangles {
   std::vector<int> cell_quadrangle;                 // per cell: its quadrangle, or -1
   std::vector<int> cell_slot;                       // per cell: its place (0-3) in it
   bool empty() const { return cells.empty(); }
+};
+
+// Per-cell sums the removal reuses from step to step (no allocation per step).
+struct FreePatternScratch {
+  std::vector<double> sum, weight, change;
 };
 
 // The quadrangles of a 2D mesh: every node shared by exactly four cells whose four other nodes
@@ -34,6 +39,7 @@ std::size_t remove_free_pressure_pattern(const CrossedQuadrangles& quadrangles,
                                          const std::vector<int>& point_cell,
                                          const std::vector<double>& cell_scale,
                                          const std::vector<double>& volume,
-                                         std::vector<double>& pressure);
+                                         std::vector<double>& pressure,
+                                         FreePatternScratch& scratch);
 
 }  // namespace lituya::solver

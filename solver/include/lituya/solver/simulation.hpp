@@ -369,6 +369,7 @@ class Simulation {
   // The quadrangles of a crossed mesh, whose free pressure pattern each step removes
   // (crossed_quadrangles.hpp); empty on a plain mesh, in 3D and with crossed_pressure_filter off.
   CrossedQuadrangles crossed_quadrangles_;
+  FreePatternScratch free_pattern_scratch_;
   std::vector<double> node_fit_alpha_;
   std::vector<double> node_fitted_pressure_;  // a_i of the fit, nodal_fit only
   mutable std::vector<double> acting_pressure_;
