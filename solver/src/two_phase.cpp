@@ -895,14 +895,16 @@ void Simulation<dim>::update_liquid_and_relocate(double dt) {
     throw RunError(m.str());
   }
   // A crossed mesh: the pressure pattern no force acts on, removed (crossed_quadrangles.cpp),
-  // and the changed points' volumes follow eq. (7) again. After the fault check: every point
-  // is then in a cell.
+  // and the changed points' volumes follow eq. (7) again (the scratch's per-cell change says
+  // which: a point of a quadrangle that is not full of water keeps its pressure and volume).
+  // After the fault check: every point is then in a cell.
   if (!crossed_quadrangles_.empty() &&
       remove_free_pressure_pattern(crossed_quadrangles_, liquid.cell, water_scale, liquid.volume,
                                    liquid.pressure, free_pattern_scratch_) > 0) {
+    const std::vector<double>& change = free_pattern_scratch_.change;
 #pragma omp parallel for num_threads(threads_) schedule(static)
     for (std::size_t q = 0; q < n_liquid; ++q) {
-      if (crossed_quadrangles_.cell_quadrangle[liquid.cell[q]] < 0) continue;
+      if (change[liquid.cell[q]] == 0) continue;
       const MaterialModelData& water = materials_[liquid.material[q]];
       liquid.volume[q] = water_volume(liquid.mass[q], water.liquid_density, liquid.pressure[q],
                                       water.bulk_modulus);

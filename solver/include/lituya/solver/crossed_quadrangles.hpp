@@ -17,7 +17,8 @@ struct CrossedQuadrangles {
   bool empty() const { return cells.empty(); }
 };
 
-// Per-cell sums the removal reuses from step to step (no allocation per step).
+// Per-cell sums the removal reuses from step to step (no allocation per step). After a call,
+// `change` holds each cell's pressure change (0 where nothing was removed).
 struct FreePatternScratch {
   std::vector<double> sum, weight, change;
 };
