@@ -188,6 +188,13 @@ SolverSettings read_solver_settings(const TomlTable& t) {
              key);
     *time = t.number_in_or(key, 1e-12, 1e9, 1.0);
   }
+  if (t.has("liquid_xpic_order")) {
+    const long long order = t.integer_or("liquid_xpic_order", 1);
+    if (order < 1 || order > 8)
+      t.fail("'liquid_xpic_order' must be an integer in [1, 8] (1 = the plain PIC blend)",
+             "liquid_xpic_order");
+    s.liquid_xpic_order = static_cast<int>(order);
+  }
   s.max_velocity = t.number_in_or("max_velocity", 1e-9, 1e9, s.max_velocity);
   s.volumetric_smoothing = t.boolean_or("volumetric_smoothing", s.volumetric_smoothing);
   if (t.has("pressure_projection_interval") && t.has("pressure_projection_time"))
@@ -430,6 +437,7 @@ toml::table to_toml(const SolverSettings& s) {
   if (s.flip_fraction) t.insert("flip_fraction", *s.flip_fraction);
   if (s.pic_damping_time) t.insert("pic_damping_time", *s.pic_damping_time);
   if (s.liquid_pic_damping_time) t.insert("liquid_pic_damping_time", *s.liquid_pic_damping_time);
+  if (s.liquid_xpic_order != 1) t.insert("liquid_xpic_order", s.liquid_xpic_order);
   if (s.pressure_projection_interval)
     t.insert("pressure_projection_interval", *s.pressure_projection_interval);
   if (s.pressure_projection_time) t.insert("pressure_projection_time", *s.pressure_projection_time);

@@ -162,6 +162,7 @@ void Simulation<dim>::set_threads(int threads) {
     projection_.sums.allocate(threads_, n_nodes);
     if (description_.solver.liquid_pressure == LiquidPressure::kNodalFit)
       pressure_fit_.allocate(threads_, n_nodes);
+    if (description_.solver.liquid_xpic_order > 1) xpic_.allocate(threads_, n_nodes);
   }
 }
 
@@ -384,8 +385,18 @@ void Simulation<dim>::step(double dt, double damping) {
   nodes_to_points(solid_, mesh_, dt, threads_);
   if (has_liquid_) {
     // Each liquid point follows its own water: the pore water's field or the free water's.
-    const detail::NodalField<Vec> free_water{water_.node_velocity.data(),
-                                             water_.node_acceleration.data()};
+    // XPIC(m) for the free water's field (xpic.hpp); the pore water keeps the plain blend,
+    // its damping being the drag's and the soil's business (not measured with XPIC).
+    const Vec* free_water_correction = nullptr;
+    if (const int order = description_.solver.liquid_xpic_order; order > 1)
+      free_water_correction =
+          xpic_
+              .update(order, mesh_, water_.points.cell, water_.shape, water_.points.mass,
+                      water_.node_velocity.data(), water_.node_acceleration.data(), dt,
+                      [&](std::size_t q) { return !liquid_in_soil_[q]; })
+              .data();
+    const detail::NodalField<Vec> free_water{
+        water_.node_velocity.data(), water_.node_acceleration.data(), free_water_correction};
     const detail::NodalField<Vec> pore_water{pore_water_velocity_.data(),
                                              pore_water_acceleration_.data()};
     nodes_to_points(water_, mesh_, dt, threads_,

@@ -28,6 +28,8 @@ TransferDamping resolve_transfer_damping(const SolverSettings& settings, double 
     d.solid.per_step_flip = d.liquid.per_step_flip = *settings.flip_fraction;
     line << "FLIP/PIC blend: FLIP share " << *settings.flip_fraction
          << " per step (flip_fraction), both phases";
+    if (settings.liquid_xpic_order > 1)
+      line << "; the water's damped share by XPIC(" << settings.liquid_xpic_order << ")";
     d.description = line.str();
     return d;
   }
@@ -49,6 +51,7 @@ TransferDamping resolve_transfer_damping(const SolverSettings& settings, double 
   resolve(settings.pic_damping_time, kSolidDampingGridTimes, d.solid, "solid");
   line << ", ";
   resolve(settings.liquid_pic_damping_time, kLiquidDampingGridTimes, d.liquid, "liquid");
+  if (settings.liquid_xpic_order > 1) line << " by XPIC(" << settings.liquid_xpic_order << ")";
   line << "; h = " << cell_size << " m";
   d.description = line.str();
   return d;

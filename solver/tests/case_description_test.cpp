@@ -311,6 +311,30 @@ TEST(CaseDescription, PressureProjectionIsCountedInStepsOrInTimeNotBoth) {
   EXPECT_FALSE(timed.pressure_projection_interval.has_value());
 }
 
+TEST(CaseDescription, LiquidXpicOrderIsAnIntegerFromOneToEight) {
+  // Out of range: the error names the line and the key.
+  for (const char* wrong : {"0", "9", "2.5"}) {
+    const std::string msg =
+        error_reading_solver_settings(std::string("[solver]\nliquid_xpic_order = ") + wrong + "\n");
+    EXPECT_NE(msg.find(":2"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("liquid_xpic_order"), std::string::npos) << msg;
+  }
+  // The default (1, the plain blend) is not written; a given order is, and reads back.
+  SolverSettings s;
+  toml::table root;
+  root.insert("solver", to_toml(s));
+  EXPECT_EQ(read_solver_settings(
+                *written_and_read(root, "lituya_xpic_none.toml").root().optional_table("solver"))
+                .liquid_xpic_order,
+            1);
+  s.liquid_xpic_order = 3;
+  root.insert_or_assign("solver", to_toml(s));
+  EXPECT_EQ(read_solver_settings(
+                *written_and_read(root, "lituya_xpic_three.toml").root().optional_table("solver"))
+                .liquid_xpic_order,
+            3);
+}
+
 // The [solver] choice keys: a scene whose line 2 sets `key` to `wrong` must fail at that
 // line, naming the key; `settings` (a non-default choice) must survive being written to a
 // case file and read back.

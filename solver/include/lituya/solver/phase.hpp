@@ -301,6 +301,8 @@ template <class Vec>
 struct NodalField {
   const Vec* velocity;
   const Vec* acceleration;
+  // Added to the PIC share's velocity, not to the move, when given: XPIC(m) (xpic.hpp).
+  const Vec* pic_correction = nullptr;
 };
 
 // Step 3: FLIP keeps the point's own velocity plus the grid's acceleration (little numerical
@@ -337,8 +339,11 @@ void nodes_to_points(Phase<dim, Points, Sums>& phase, const Mesh<dim>& mesh, dou
         against_wall += n(i) * (phase.held_components(node) * (points.velocity[p] - old));
       }
     }
+    Vec damped = velocity;
+    if (field.pic_correction)
+      for (int i = 0; i <= dim; ++i) damped += n(i) * field.pic_correction[nodes[i]];
     points.velocity[p] =
-        flip * (points.velocity[p] + dt * acceleration - against_wall) + (1 - flip) * velocity;
+        flip * (points.velocity[p] + dt * acceleration - against_wall) + (1 - flip) * damped;
     points.position[p] += dt * velocity;
     if constexpr (requires { points.displacement; }) points.displacement[p] += dt * velocity;
   }

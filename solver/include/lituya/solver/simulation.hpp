@@ -38,6 +38,7 @@
 #include "lituya/solver/phase.hpp"
 #include "lituya/solver/transfer_damping.hpp"
 #include "lituya/solver/water_in_flight.hpp"
+#include "lituya/solver/xpic.hpp"
 
 namespace lituya::solver {
 
@@ -370,6 +371,8 @@ class Simulation {
   // (crossed_quadrangles.hpp); empty on a plain mesh, in 3D and with crossed_pressure_filter off.
   CrossedQuadrangles crossed_quadrangles_;
   FreePatternScratch free_pattern_scratch_;
+  // The free water's XPIC(m) correction ([solver] liquid_xpic_order > 1; xpic.hpp).
+  Xpic<dim> xpic_;
   std::vector<double> node_fit_alpha_;
   std::vector<double> node_fitted_pressure_;  // a_i of the fit, nodal_fit only
   mutable std::vector<double> acting_pressure_;
