@@ -133,7 +133,7 @@ struct SolverSettings {
   std::optional<double> liquid_pic_damping_time;
   // The water's damped share by XPIC(m) (xpic.hpp; scientific manual 4.1): m = 1 is the plain
   // PIC blend, m >= 2 damps what the grid resolves as (1 - lambda)^m instead of 1 - lambda.
-  // Experimental (stop 56): measured on the standing wave only.
+  // Experimental (stop 56): measured on the standing wave and on Case B at 0.02 / 0.015 m.
   int liquid_xpic_order = 1;
   double max_velocity = 100.0;
   // Average the volumetric strain increment over the cells around each node before the
