@@ -79,10 +79,6 @@ class Xpic {
     return correction_;
   }
 
-  const std::vector<Vec>& correction() const {
-    return correction_;
-  }
-
  private:
   struct Sums {
     std::vector<Vec> momentum;
