@@ -1,7 +1,10 @@
 #include "lituya/solver/boundary_conditions.hpp"
 
+#include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <unordered_map>
 
 #include "lituya/common/input_error.hpp"
@@ -134,60 +137,245 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
   return constraint;
 }
 
+namespace {
+
+// One wall's law at one node (entry k of constraint c), as in the header. `pass` 0 gives back
+// the pore-pressure push at a contact wall; pass 1 only mends corners.
+template <int dim>
+void apply_wall(const NodalConstraint<dim>& c, std::size_t k, Eigen::Matrix<double, dim, 1>& v,
+                int pass, const std::vector<Eigen::Matrix<double, dim, 1>>* wall_pore_pressure_push,
+                bool coulomb) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  switch (c.type) {
+    case BoundaryType::kFixed:
+      v.setZero();
+      break;
+    case BoundaryType::kFixity:
+      for (int d : c.directions) v(d) = 0.0;
+      break;
+    case BoundaryType::kRoller:
+      v -= v.dot(c.normal[k]) * c.normal[k];
+      break;
+    case BoundaryType::kContact: {
+      const Vec& n = c.normal[k];
+      const double approach = v.dot(n);
+      // The wall's reaction to the pore pressure on the grains is given back once (the
+      // first pass; the second only mends corners), with no friction. What is left is
+      // the skeleton's own approach (header comment).
+      const double pore_part = pass == 0 && wall_pore_pressure_push
+                                   ? std::max(0.0, (*wall_pore_pressure_push)[c.nodes[k]].dot(n))
+                                   : 0.0;
+      const double skeleton = approach - pore_part;
+      const Vec tangential = v - approach * n;
+      if (skeleton <= 0) {
+        // Separating: the wall does not pull. Saturated grains lift off at what their
+        // skeleton gives them once the wall has pushed back the pore pressure.
+        if (pore_part > 0) v = tangential + skeleton * n;
+        return;
+      }
+      const double slip = tangential.norm();
+      // Coulomb: the tangential impulse is at most mu times the normal impulse, m times
+      // the skeleton's approach; stick if that is enough to stop the slip.
+      const double reduction = coulomb ? c.friction * skeleton : 0.0;
+      v = slip > reduction ? Vec(tangential * (1.0 - reduction / slip)) : Vec::Zero();
+      break;
+    }
+    case BoundaryType::kTraction:
+      break;
+  }
+}
+
+// One wall condition of a node on several walls.
+template <int dim>
+struct CornerEntry {
+  int node;
+  const NodalConstraint<dim>* constraint;
+  std::size_t k;
+};
+
+// The rows a wall holds exactly (a fixity's axes, all axes for `fixed`, a roller's normal);
+// a contact's normal is a one-sided row, added by the caller when active.
+template <int dim>
+void add_held_rows(const CornerEntry<dim>& e, std::vector<Eigen::Matrix<double, dim, 1>>& rows) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  const NodalConstraint<dim>& c = *e.constraint;
+  if (c.type == BoundaryType::kFixed)
+    for (int d = 0; d < dim; ++d) rows.push_back(Vec::Unit(d));
+  else if (c.type == BoundaryType::kFixity)
+    for (int d : c.directions) rows.push_back(Vec::Unit(d));
+  else if (c.type == BoundaryType::kRoller)
+    rows.push_back(c.normal[e.k]);
+}
+
+// u less its components along the span of `rows` (Gram-Schmidt; dependent rows dropped).
+template <int dim>
+Eigen::Matrix<double, dim, 1> remove_span(Eigen::Matrix<double, dim, 1> u,
+                                          const std::vector<Eigen::Matrix<double, dim, 1>>& rows) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  std::array<Vec, dim> basis;
+  int size = 0;
+  for (const Vec& row : rows) {
+    if (size == dim) break;
+    Vec b = row;
+    for (int j = 0; j < size; ++j) b -= b.dot(basis[j]) * basis[j];
+    const double length = b.norm();
+    if (length < 1e-9 * row.norm()) continue;
+    basis[size++] = b / length;
+  }
+  for (int j = 0; j < size; ++j) u -= u.dot(basis[j]) * basis[j];
+  return u;
+}
+
+// A node on walls that meet at an angle other than 90 degrees: the walls' laws one after
+// the other are not the walls' reaction there. At the toe of a slope (a contact slope at 45
+// degrees over a roller bed) a velocity into the corner, projected on the slope and then
+// on the bed, came out along the bed, away from the slope, as fast as it went in: an
+// impulse no wall gives (a wall pushes along its own normal, and only while the node stays on
+// it). On Case B's crossed meshes the toe node, holding almost no water, was thrown along the
+// bed at thousands of m/s each step, the water points beside it took a share of it, and the
+// corner's pressure reached MPa (issue 8). Here the node takes the admissible velocity
+// nearest to its own, the walls' frictionless reaction: the projection onto {held rows of
+// fixities and rollers zero, n . v <= 0 at each contact}, found by trying each set of active
+// contacts (a few walls at most) and keeping the nearest admissible candidate. The pore push
+// of a contact is given back first (apply_wall's pass 0), and Coulomb's law then reduces
+// what slip is left by mu times each active contact's normal velocity removed.
+template <int dim>
+void apply_corner(const CornerEntry<dim>* entries, std::size_t count,
+                  Eigen::Matrix<double, dim, 1>& v,
+                  const std::vector<Eigen::Matrix<double, dim, 1>>* wall_pore_pressure_push,
+                  bool coulomb) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  std::vector<Vec> held;
+  std::vector<std::size_t> contacts;
+  for (std::size_t i = 0; i < count; ++i) {
+    const CornerEntry<dim>& e = entries[i];
+    add_held_rows(e, held);
+    if (e.constraint->type != BoundaryType::kContact) continue;
+    contacts.push_back(i);
+    const Vec& n = e.constraint->normal[e.k];
+    if (wall_pore_pressure_push) v -= std::max(0.0, (*wall_pore_pressure_push)[e.node].dot(n)) * n;
+  }
+  const std::size_t subsets = std::size_t{1} << std::min<std::size_t>(contacts.size(), 6);
+  const double tolerance = 1e-12 * v.norm();
+  Vec best = Vec::Zero();
+  double best_distance = std::numeric_limits<double>::infinity();
+  std::size_t best_set = 0;
+  std::vector<Vec> rows;
+  for (std::size_t set = 0; set < subsets; ++set) {
+    rows = held;
+    for (std::size_t j = 0; j < contacts.size(); ++j)
+      if (set >> j & 1)
+        rows.push_back(entries[contacts[j]].constraint->normal[entries[contacts[j]].k]);
+    const Vec w = remove_span<dim>(v, rows);
+    bool admissible = true;
+    for (std::size_t i : contacts)
+      admissible = admissible && w.dot(entries[i].constraint->normal[entries[i].k]) <= tolerance;
+    const double distance = (w - v).squaredNorm();
+    if (admissible && distance < best_distance) {
+      best = w;
+      best_distance = distance;
+      best_set = set;
+    }
+  }
+  // Coulomb on what slips: each active contact's normal velocity removed, lambda_k from
+  // v - w = sum of the rows times their multipliers (least squares; unique where w != 0).
+  const double slip = best.norm();
+  if (coulomb && slip > 0 && best_set != 0) {
+    rows = held;
+    std::vector<std::size_t> active;
+    for (std::size_t j = 0; j < contacts.size(); ++j)
+      if (best_set >> j & 1) {
+        active.push_back(contacts[j]);
+        rows.push_back(entries[contacts[j]].constraint->normal[entries[contacts[j]].k]);
+      }
+    Eigen::MatrixXd m(dim, rows.size());
+    for (std::size_t r = 0; r < rows.size(); ++r) m.col(static_cast<Eigen::Index>(r)) = rows[r];
+    const Eigen::VectorXd multiplier = m.completeOrthogonalDecomposition().solve(Vec(v - best));
+    double reduction = 0;
+    for (std::size_t j = 0; j < active.size(); ++j)
+      reduction += entries[active[j]].constraint->friction *
+                   std::max(0.0, multiplier(static_cast<Eigen::Index>(held.size() + j)));
+    best = slip > reduction ? Vec(best * (1.0 - reduction / slip)) : Vec::Zero();
+  }
+  v = best;
+}
+
+// Whether the walls at a corner node meet at right angles (each pair of normals and held
+// axes orthogonal): there the laws one after the other are exact, and kept as they were.
+template <int dim>
+bool walls_orthogonal(const CornerEntry<dim>* entries, std::size_t count) {
+  using Vec = Eigen::Matrix<double, dim, 1>;
+  std::vector<Vec> directions;
+  for (std::size_t i = 0; i < count; ++i) {
+    const NodalConstraint<dim>& c = *entries[i].constraint;
+    if (c.type == BoundaryType::kFixed) return true;  // holds everything, whatever the rest
+    if (c.type == BoundaryType::kTraction) continue;
+    if (c.type == BoundaryType::kFixity)
+      for (int d : c.directions) directions.push_back(Vec::Unit(d));
+    else
+      directions.push_back(c.normal[entries[i].k]);
+  }
+  for (std::size_t i = 0; i < directions.size(); ++i)
+    for (std::size_t j = i + 1; j < directions.size(); ++j) {
+      const double cosine = std::abs(directions[i].dot(directions[j]));
+      if (cosine > 1e-9 && cosine < 1.0 - 1e-9) return false;
+    }
+  return true;
+}
+
+}  // namespace
+
 template <int dim>
 void apply_constraints(const std::vector<const NodalConstraint<dim>*>& active,
                        std::vector<Eigen::Matrix<double, dim, 1>>& velocity,
                        const std::vector<Eigen::Matrix<double, dim, 1>>* wall_pore_pressure_push,
                        bool coulomb) {
-  using Vec = Eigen::Matrix<double, dim, 1>;
-  for (int pass = 0; pass < 2; ++pass) {
-    for (const NodalConstraint<dim>* c : active) {
-      const std::size_t n_nodes = c->nodes.size();
-      switch (c->type) {
-        case BoundaryType::kFixed:
-          for (std::size_t k = 0; k < n_nodes; ++k) velocity[c->nodes[k]].setZero();
-          break;
-        case BoundaryType::kFixity:
-          for (std::size_t k = 0; k < n_nodes; ++k)
-            for (int d : c->directions) velocity[c->nodes[k]](d) = 0.0;
-          break;
-        case BoundaryType::kRoller:
-          for (std::size_t k = 0; k < n_nodes; ++k) {
-            Vec& v = velocity[c->nodes[k]];
-            v -= v.dot(c->normal[k]) * c->normal[k];
-          }
-          break;
-        case BoundaryType::kContact:
-          for (std::size_t k = 0; k < n_nodes; ++k) {
-            Vec& v = velocity[c->nodes[k]];
-            const Vec& n = c->normal[k];
-            const double approach = v.dot(n);
-            // The wall's reaction to the pore pressure on the grains is given back once (the
-            // first pass; the second only mends corners), with no friction. What is left is
-            // the skeleton's own approach (header comment).
-            const double pore_part =
-                pass == 0 && wall_pore_pressure_push
-                    ? std::max(0.0, (*wall_pore_pressure_push)[c->nodes[k]].dot(n))
-                    : 0.0;
-            const double skeleton = approach - pore_part;
-            const Vec tangential = v - approach * n;
-            if (skeleton <= 0) {
-              // Separating: the wall does not pull. Saturated grains lift off at what their
-              // skeleton gives them once the wall has pushed back the pore pressure.
-              if (pore_part > 0) v = tangential + skeleton * n;
-              continue;
-            }
-            const double slip = tangential.norm();
-            // Coulomb: the tangential impulse is at most mu times the normal impulse, m times
-            // the skeleton's approach; stick if that is enough to stop the slip.
-            const double reduction = coulomb ? c->friction * skeleton : 0.0;
-            v = slip > reduction ? Vec(tangential * (1.0 - reduction / slip)) : Vec::Zero();
-          }
-          break;
-        case BoundaryType::kTraction:
-          break;
+  // How many wall conditions each node has. Scratch kept between calls (this runs several
+  // times a step, serially): zero again on return.
+  thread_local std::vector<unsigned char> walls_at;
+  thread_local std::vector<CornerEntry<dim>> corner;
+  if (walls_at.size() < velocity.size()) walls_at.resize(velocity.size(), 0);
+  for (const NodalConstraint<dim>* c : active)
+    if (c->type != BoundaryType::kTraction)
+      for (int node : c->nodes)
+        if (walls_at[node] < 255) ++walls_at[node];
+  // A node on one wall takes that wall's law (twice, as it always has: the second pass changes
+  // nothing there but the last bits of a contact's slip).
+  corner.clear();
+  for (const NodalConstraint<dim>* c : active) {
+    if (c->type == BoundaryType::kTraction) continue;
+    for (std::size_t k = 0; k < c->nodes.size(); ++k) {
+      const int node = c->nodes[k];
+      if (walls_at[node] > 1) {
+        corner.push_back({node, c, k});
+        continue;
       }
+      for (int pass = 0; pass < 2; ++pass)
+        apply_wall(*c, k, velocity[node], pass, wall_pore_pressure_push, coulomb);
     }
+  }
+  for (const NodalConstraint<dim>* c : active)
+    if (c->type != BoundaryType::kTraction)
+      for (int node : c->nodes) walls_at[node] = 0;
+  // Nodes on several walls, each with its entries in the order of `active`.
+  std::stable_sort(
+      corner.begin(), corner.end(),
+      [](const CornerEntry<dim>& a, const CornerEntry<dim>& b) { return a.node < b.node; });
+  for (std::size_t first = 0; first < corner.size();) {
+    std::size_t last = first;
+    while (last < corner.size() && corner[last].node == corner[first].node) ++last;
+    const CornerEntry<dim>* entries = corner.data() + first;
+    const std::size_t count = last - first;
+    Eigen::Matrix<double, dim, 1>& v = velocity[corner[first].node];
+    if (walls_orthogonal(entries, count)) {
+      for (int pass = 0; pass < 2; ++pass)
+        for (std::size_t i = 0; i < count; ++i)
+          apply_wall(*entries[i].constraint, entries[i].k, v, pass, wall_pore_pressure_push,
+                     coulomb);
+    } else {
+      apply_corner(entries, count, v, wall_pore_pressure_push, coulomb);
+    }
+    first = last;
   }
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -135,6 +136,61 @@ TEST(BoundaryConditions, SaturatedContactTakesFrictionFromTheSkeletonAndLetsItLi
   EXPECT_DOUBLE_EQ(dry[0](0), 0.85);
   EXPECT_EQ(dry[0](1), 0.0);
   EXPECT_EQ(dry[1], Vec(1.0, 0.2));
+}
+
+// The toe of Case B's slope: a contact slope at 45 degrees (outward normal (-1, -1)/sqrt 2)
+// meets a roller bed (outward normal (0, -1)) at node 0, an obtuse corner of the water. The
+// node's velocity after the walls must be the admissible velocity nearest to its own (the
+// walls' reaction): zero bed-normal velocity and no motion into the slope. Laws applied one
+// after the other turned a velocity into the corner, (-1, -2), into (0.5, 0): along the bed,
+// away from the slope, an impulse no wall gives (issue 8; it threw Case B's toe node along
+// the bed at thousands of m/s). Each expected value follows from the geometry by hand.
+TEST(BoundaryConditions, ANodeAtAnObtuseCornerTakesTheNearestAdmissibleVelocity) {
+  using Vec = Eigen::Vector2d;
+  const double r = std::sqrt(0.5);
+  NodalConstraint<2> slope, bed;
+  slope.type = BoundaryType::kContact;
+  slope.nodes = {0};
+  slope.normal = {Vec(-r, -r)};
+  bed.type = BoundaryType::kRoller;
+  bed.nodes = {0};
+  bed.normal = {Vec(0.0, -1.0)};
+  const auto after = [&](const Vec& v, bool slope_first, double friction = 0.0) {
+    slope.friction = friction;
+    std::vector<Vec> velocity = {v};
+    if (slope_first)
+      apply_constraints<2>({&slope, &bed}, velocity, nullptr, friction > 0);
+    else
+      apply_constraints<2>({&bed, &slope}, velocity, nullptr, friction > 0);
+    return velocity[0];
+  };
+  for (bool slope_first : {true, false}) {
+    // Into both walls: held.
+    EXPECT_LT(after(Vec(-1.0, -2.0), slope_first).norm(), 1e-15);
+    // Along the bed into the slope: held.
+    EXPECT_LT(after(Vec(-1.0, 0.0), slope_first).norm(), 1e-15);
+    // Along the bed away from the slope, into the bed: the bed takes the normal part only.
+    EXPECT_NEAR((after(Vec(2.0, -1.0), slope_first) - Vec(2.0, 0.0)).norm(), 0.0, 1e-15);
+    // Up and away from both: free of the slope, the bed still holds its normal.
+    EXPECT_NEAR((after(Vec(1.0, 3.0), slope_first) - Vec(1.0, 0.0)).norm(), 0.0, 1e-15);
+    // Up the slope and into it, (-2, 1): the bed removes the 1, then (-2, 0) goes into the
+    // slope, so held; the nearest admissible point of the line v_y = 0 with v_x >= 0 is 0.
+    EXPECT_LT(after(Vec(-2.0, 1.0), slope_first).norm(), 1e-15);
+    // Friction cannot make a held node move, nor a free one slower along the bed.
+    EXPECT_LT(after(Vec(-1.0, -2.0), slope_first, 0.5).norm(), 1e-15);
+    EXPECT_NEAR((after(Vec(2.0, -1.0), slope_first, 0.5) - Vec(2.0, 0.0)).norm(), 0.0, 1e-15);
+  }
+  // Two contact walls at 135 degrees in 2D with friction: a velocity into the slope only
+  // slides along it, slowed by mu times its normal part (the one-wall law).
+  NodalConstraint<2> contact_bed = bed;
+  contact_bed.type = BoundaryType::kContact;
+  contact_bed.friction = 0.5;
+  slope.friction = 0.5;
+  std::vector<Vec> velocity = {Vec(-1.0, 0.5)};  // normal part into the slope 0.25 sqrt 2
+  apply_constraints<2>({&slope, &contact_bed}, velocity);
+  const Vec along = Vec(-r, r);  // up the slope
+  const double slip = Vec(-1.0, 0.5).dot(along), normal = Vec(-1.0, 0.5).dot(Vec(-r, -r));
+  EXPECT_NEAR((velocity[0] - (slip - 0.5 * normal) * along).norm(), 0.0, 1e-15);
 }
 
 // What a node's conditions hold, for the grains' velocity at walls (phase.hpp,

@@ -35,8 +35,11 @@ NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
                                      const std::vector<std::array<int, dim>>& facets,
                                      const Mesh<dim>& mesh, const std::string& file);
 
-// Applies the active constraints to nodal velocities (twice over, so that a node on two
-// non-orthogonal walls satisfies both). Tractions are skipped (they are forces).
+// Applies the active constraints to nodal velocities. Tractions are skipped (they are forces).
+// A node on one wall, or on walls at right angles, takes each wall's law in turn (twice over);
+// a node where walls meet at another angle (a slope's toe) takes the admissible velocity
+// nearest to its own, the walls' frictionless reaction, then Coulomb's reduction of what slips
+// (boundary_conditions.cpp, apply_corner).
 // `wall_pore_pressure_push` (may be null; two-phase cases): per contact node, the velocity
 // dt (1 - s) W / m_s (1 - s the grains' share of the pore-pressure force; two_phase.cpp) that the
 // wall's reaction W to the grains' share of the pore pressure gives
