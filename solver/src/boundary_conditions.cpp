@@ -193,39 +193,6 @@ struct CornerEntry {
   std::size_t k;
 };
 
-// The rows a wall holds exactly (a fixity's axes, all axes for `fixed`, a roller's normal);
-// a contact's normal is a one-sided row, added by the caller when active.
-template <int dim>
-void add_held_rows(const CornerEntry<dim>& e, std::vector<Eigen::Matrix<double, dim, 1>>& rows) {
-  using Vec = Eigen::Matrix<double, dim, 1>;
-  const NodalConstraint<dim>& c = *e.constraint;
-  if (c.type == BoundaryType::kFixed)
-    for (int d = 0; d < dim; ++d) rows.push_back(Vec::Unit(d));
-  else if (c.type == BoundaryType::kFixity)
-    for (int d : c.directions) rows.push_back(Vec::Unit(d));
-  else if (c.type == BoundaryType::kRoller)
-    rows.push_back(c.normal[e.k]);
-}
-
-// u less its components along the span of `rows` (Gram-Schmidt; dependent rows dropped).
-template <int dim>
-Eigen::Matrix<double, dim, 1> remove_span(Eigen::Matrix<double, dim, 1> u,
-                                          const std::vector<Eigen::Matrix<double, dim, 1>>& rows) {
-  using Vec = Eigen::Matrix<double, dim, 1>;
-  std::array<Vec, dim> basis;
-  int size = 0;
-  for (const Vec& row : rows) {
-    if (size == dim) break;
-    Vec b = row;
-    for (int j = 0; j < size; ++j) b -= b.dot(basis[j]) * basis[j];
-    const double length = b.norm();
-    if (length < 1e-9 * row.norm()) continue;
-    basis[size++] = b / length;
-  }
-  for (int j = 0; j < size; ++j) u -= u.dot(basis[j]) * basis[j];
-  return u;
-}
-
 // A node on walls that meet at an angle other than 90 degrees: the walls' laws one after
 // the other are not the walls' reaction there. At the toe of a slope (a contact slope at 45
 // degrees over a roller bed) a velocity into the corner, projected on the slope and then
@@ -239,37 +206,46 @@ Eigen::Matrix<double, dim, 1> remove_span(Eigen::Matrix<double, dim, 1> u,
 // contacts (a few walls at most) and keeping the nearest admissible candidate. The pore push
 // of a contact is given back first (apply_wall's pass 0), and Coulomb's law then reduces
 // what slip is left by mu times each active contact's normal velocity removed.
+// At most this many contact walls at one node take part in the search (2^6 candidate sets);
+// more have never been seen (a 3D box vertex has three).
+constexpr int kMaxCornerContacts = 6;
+
 template <int dim>
 void apply_corner(const CornerEntry<dim>* entries, std::size_t count,
                   Eigen::Matrix<double, dim, 1>& v,
                   const std::vector<Eigen::Matrix<double, dim, 1>>* wall_pore_pressure_push,
                   bool coulomb) {
   using Vec = Eigen::Matrix<double, dim, 1>;
-  std::vector<Vec> held;
-  std::vector<std::size_t> contacts;
+  using Matrix = Eigen::Matrix<double, dim, dim>;
+  Matrix held = Matrix::Zero();  // what fixities, rollers and `fixed` hold (two-sided)
+  std::array<const Vec*, kMaxCornerContacts> normal{};
+  std::array<double, kMaxCornerContacts> friction{};
+  int contacts = 0;
   for (std::size_t i = 0; i < count; ++i) {
-    const CornerEntry<dim>& e = entries[i];
-    add_held_rows(e, held);
-    if (e.constraint->type != BoundaryType::kContact) continue;
-    contacts.push_back(i);
-    const Vec& n = e.constraint->normal[e.k];
-    if (wall_pore_pressure_push) v -= std::max(0.0, (*wall_pore_pressure_push)[e.node].dot(n)) * n;
+    const NodalConstraint<dim>& c = *entries[i].constraint;
+    if (c.type != BoundaryType::kContact) {
+      held += wall_holds(c, entries[i].k);
+      continue;
+    }
+    const Vec& n = c.normal[entries[i].k];
+    if (wall_pore_pressure_push)
+      v -= std::max(0.0, (*wall_pore_pressure_push)[entries[i].node].dot(n)) * n;
+    if (contacts < kMaxCornerContacts) {
+      normal[contacts] = &n;
+      friction[contacts++] = c.friction;
+    }
   }
-  const std::size_t subsets = std::size_t{1} << std::min<std::size_t>(contacts.size(), 6);
   const double tolerance = 1e-12 * v.norm();
   Vec best = Vec::Zero();
   double best_distance = std::numeric_limits<double>::infinity();
-  std::size_t best_set = 0;
-  std::vector<Vec> rows;
-  for (std::size_t set = 0; set < subsets; ++set) {
-    rows = held;
-    for (std::size_t j = 0; j < contacts.size(); ++j)
-      if (set >> j & 1)
-        rows.push_back(entries[contacts[j]].constraint->normal[entries[contacts[j]].k]);
-    const Vec w = remove_span<dim>(v, rows);
+  unsigned best_set = 0;
+  for (unsigned set = 0; set < (1u << contacts); ++set) {
+    Matrix sum = held;
+    for (int j = 0; j < contacts; ++j)
+      if (set >> j & 1u) sum += *normal[j] * normal[j]->transpose();
+    const Vec w = v - range_projector<dim>(sum) * v;
     bool admissible = true;
-    for (std::size_t i : contacts)
-      admissible = admissible && w.dot(entries[i].constraint->normal[entries[i].k]) <= tolerance;
+    for (int j = 0; j < contacts; ++j) admissible = admissible && w.dot(*normal[j]) <= tolerance;
     const double distance = (w - v).squaredNorm();
     if (admissible && distance < best_distance) {
       best = w;
@@ -277,48 +253,40 @@ void apply_corner(const CornerEntry<dim>* entries, std::size_t count,
       best_set = set;
     }
   }
-  // Coulomb on what slips: each active contact's normal velocity removed, lambda_k from
-  // v - w = sum of the rows times their multipliers (least squares; unique where w != 0).
+  // Coulomb on what slips: each active contact's multiplier lambda_k, the normal velocity it
+  // removed, from (I - P_held)(v - w) = sum_k lambda_k (I - P_held) n_k (least squares; unique
+  // where w != 0, and fixed-size storage: no allocation).
   const double slip = best.norm();
   if (coulomb && slip > 0 && best_set != 0) {
-    rows = held;
-    std::vector<std::size_t> active;
-    for (std::size_t j = 0; j < contacts.size(); ++j)
-      if (best_set >> j & 1) {
-        active.push_back(contacts[j]);
-        rows.push_back(entries[contacts[j]].constraint->normal[entries[contacts[j]].k]);
+    const Matrix free = Matrix::Identity() - range_projector<dim>(held);
+    Eigen::Matrix<double, dim, Eigen::Dynamic, 0, dim, kMaxCornerContacts> active(dim, 0);
+    std::array<double, kMaxCornerContacts> active_friction{};
+    for (int j = 0; j < contacts; ++j)
+      if (best_set >> j & 1u) {
+        active.conservativeResize(Eigen::NoChange, active.cols() + 1);
+        active.col(active.cols() - 1) = free * *normal[j];
+        active_friction[static_cast<std::size_t>(active.cols() - 1)] = friction[j];
       }
-    Eigen::MatrixXd m(dim, rows.size());
-    for (std::size_t r = 0; r < rows.size(); ++r) m.col(static_cast<Eigen::Index>(r)) = rows[r];
-    const Eigen::VectorXd multiplier = m.completeOrthogonalDecomposition().solve(Vec(v - best));
+    const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxCornerContacts, 1> multiplier =
+        active.completeOrthogonalDecomposition().solve(Vec(free * (v - best)));
     double reduction = 0;
-    for (std::size_t j = 0; j < active.size(); ++j)
-      reduction += entries[active[j]].constraint->friction *
-                   std::max(0.0, multiplier(static_cast<Eigen::Index>(held.size() + j)));
+    for (Eigen::Index j = 0; j < active.cols(); ++j)
+      reduction += active_friction[static_cast<std::size_t>(j)] * std::max(0.0, multiplier(j));
     best = slip > reduction ? Vec(best * (1.0 - reduction / slip)) : Vec::Zero();
   }
   v = best;
 }
 
-// Whether the walls at a corner node meet at right angles (each pair of normals and held
-// axes orthogonal): there the laws one after the other are exact, and kept as they were.
+// Whether the walls at a corner node take the laws one after the other exactly: each pair of
+// the walls' held projectors commutes (orthogonal walls, or the same wall twice; `fixed`
+// commutes with anything). Kept there as it was, to the bit.
 template <int dim>
 bool walls_orthogonal(const CornerEntry<dim>* entries, std::size_t count) {
-  using Vec = Eigen::Matrix<double, dim, 1>;
-  std::vector<Vec> directions;
-  for (std::size_t i = 0; i < count; ++i) {
-    const NodalConstraint<dim>& c = *entries[i].constraint;
-    if (c.type == BoundaryType::kFixed) return true;  // holds everything, whatever the rest
-    if (c.type == BoundaryType::kTraction) continue;
-    if (c.type == BoundaryType::kFixity)
-      for (int d : c.directions) directions.push_back(Vec::Unit(d));
-    else
-      directions.push_back(c.normal[entries[i].k]);
-  }
-  for (std::size_t i = 0; i < directions.size(); ++i)
-    for (std::size_t j = i + 1; j < directions.size(); ++j) {
-      const double cosine = std::abs(directions[i].dot(directions[j]));
-      if (cosine > 1e-9 && cosine < 1.0 - 1e-9) return false;
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t j = i + 1; j < count; ++j) {
+      const auto a = wall_holds(*entries[i].constraint, entries[i].k);
+      const auto b = wall_holds(*entries[j].constraint, entries[j].k);
+      if ((a * b - b * a).norm() > 1e-9) return false;
     }
   return true;
 }

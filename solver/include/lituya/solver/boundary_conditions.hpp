@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
 #include "lituya/solver/case_description.hpp"
 #include "lituya/solver/mesh.hpp"
@@ -34,6 +35,43 @@ template <int dim>
 NodalConstraint<dim> make_constraint(const BoundaryCondition& bc,
                                      const std::vector<std::array<int, dim>>& facets,
                                      const Mesh<dim>& mesh, const std::string& file);
+
+// What entry k of a wall condition holds at its node, as a sum of n n^T: all components for
+// `fixed`, the listed axes for a fixity, the normal for a roller or a contact wall (a
+// contact's normal counts as held also where the node leaves it), nothing for a traction.
+template <int dim>
+Eigen::Matrix<double, dim, dim> wall_holds(const NodalConstraint<dim>& c, std::size_t k) {
+  using Matrix = Eigen::Matrix<double, dim, dim>;
+  Matrix sum = Matrix::Zero();
+  switch (c.type) {
+    case BoundaryType::kFixed:
+      sum = Matrix::Identity();
+      break;
+    case BoundaryType::kFixity:
+      for (int d : c.directions) sum(d, d) = 1.0;
+      break;
+    case BoundaryType::kRoller:
+    case BoundaryType::kContact:
+      sum = c.normal[k] * c.normal[k].transpose();
+      break;
+    case BoundaryType::kTraction:
+      break;
+  }
+  return sum;
+}
+
+// The orthogonal projector onto the range of a sum of n n^T (symmetric, positive): the
+// components a node on several walls has held.
+template <int dim>
+Eigen::Matrix<double, dim, dim> range_projector(const Eigen::Matrix<double, dim, dim>& sum) {
+  using Matrix = Eigen::Matrix<double, dim, dim>;
+  const Eigen::SelfAdjointEigenSolver<Matrix> eigen(sum);
+  Matrix projector = Matrix::Zero();
+  for (int j = 0; j < dim; ++j)
+    if (eigen.eigenvalues()(j) > 1e-6 * dim)
+      projector += eigen.eigenvectors().col(j) * eigen.eigenvectors().col(j).transpose();
+  return projector;
+}
 
 // Applies the active constraints to nodal velocities. Tractions are skipped (they are forces).
 // A node on one wall, or on walls at right angles, takes each wall's law in turn (twice over);

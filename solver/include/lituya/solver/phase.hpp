@@ -151,35 +151,9 @@ struct Phase {
     if (!wall_velocity_to_points) return;
     held.assign(held_nodes.size(), Matrix::Zero());
     for (const NodalConstraint<dim>* c : constraints)
-      for (std::size_t k = 0; k < c->nodes.size(); ++k) {
-        Matrix& sum = held[held_index(static_cast<std::size_t>(c->nodes[k]))];
-        switch (c->type) {
-          case BoundaryType::kFixed:
-            sum += Matrix::Identity();
-            break;
-          case BoundaryType::kFixity:
-            for (int d : c->directions) sum(d, d) += 1.0;
-            break;
-          case BoundaryType::kRoller:
-          case BoundaryType::kContact:
-            sum += c->normal[k] * c->normal[k].transpose();
-            break;
-          case BoundaryType::kTraction:
-            break;
-        }
-      }
-    for (Matrix& sum : held) sum = range_projector(sum);
-  }
-  // The orthogonal projector onto the range of a sum of n n^T (symmetric, positive).
-  static Eigen::Matrix<double, dim, dim> range_projector(
-      const Eigen::Matrix<double, dim, dim>& sum) {
-    using Matrix = Eigen::Matrix<double, dim, dim>;
-    const Eigen::SelfAdjointEigenSolver<Matrix> eigen(sum);
-    Matrix projector = Matrix::Zero();
-    for (int j = 0; j < dim; ++j)
-      if (eigen.eigenvalues()(j) > 1e-6 * dim)
-        projector += eigen.eigenvectors().col(j) * eigen.eigenvectors().col(j).transpose();
-    return projector;
+      for (std::size_t k = 0; k < c->nodes.size(); ++k)
+        held[held_index(static_cast<std::size_t>(c->nodes[k]))] += wall_holds(*c, k);
+    for (Matrix& sum : held) sum = range_projector<dim>(sum);
   }
   std::size_t bytes() const {
     return points.bytes() + shape.size() * sizeof(Shape) +
