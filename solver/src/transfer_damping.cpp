@@ -50,7 +50,9 @@ TransferDamping resolve_transfer_damping(const SolverSettings& settings, double 
   line << "FLIP/PIC blend, PIC damping time: ";
   resolve(settings.pic_damping_time, kSolidDampingGridTimes, d.solid, "solid");
   line << ", ";
-  resolve(settings.liquid_pic_damping_time, kLiquidDampingGridTimes, d.liquid, "liquid");
+  resolve(settings.liquid_pic_damping_time,
+          settings.liquid_xpic_order > 1 ? kLiquidXpicDampingGridTimes : kLiquidDampingGridTimes,
+          d.liquid, "liquid");
   if (settings.liquid_xpic_order > 1) line << " by XPIC(" << settings.liquid_xpic_order << ")";
   line << "; h = " << cell_size << " m";
   d.description = line.str();

@@ -47,6 +47,21 @@ TEST(TransferDamping, GivenSettingsWin) {
   EXPECT_DOUBLE_EQ(f.liquid.flip_share(1e-6), 0.9);
 }
 
+TEST(TransferDamping, XpicWaterDefaultsToOneGridTime) {
+  // XPIC(m >= 2) damps the grid-scale noise at the rate of a plain blend a grid time long
+  // while keeping the resolved motion: the default is 1 grid time instead of 30.
+  SolverSettings xpic;
+  xpic.liquid_xpic_order = 2;
+  const TransferDamping d = resolve_transfer_damping(xpic, 0.015, 9.81);
+  const double grid_time = std::sqrt(0.015 / 9.81);  // 0.0391 s
+  EXPECT_NEAR(d.liquid.time, grid_time, 1e-12);
+  EXPECT_NEAR(d.solid.time, 3.0 * grid_time, 1e-12);  // the soil's default is unchanged
+  EXPECT_NE(d.description.find("(1 sqrt(h/g)) by XPIC(2)"), std::string::npos) << d.description;
+  // A given time still wins.
+  xpic.liquid_pic_damping_time = 0.2;
+  EXPECT_DOUBLE_EQ(resolve_transfer_damping(xpic, 0.015, 9.81).liquid.time, 0.2);
+}
+
 TEST(TransferDamping, WithoutGravityTheOldPerStepBlendRemains) {
   const TransferDamping d = resolve_transfer_damping(SolverSettings{}, 0.02, 0.0);
   EXPECT_DOUBLE_EQ(d.solid.flip_share(1e-3), 0.99);

@@ -33,14 +33,23 @@ struct TransferDamping {
 //   27.3 / 30.4 / 30.9 / 33.1 / 33.5 / 33.6 / 33.6 / 33.6 mm at liquid damping times 0.09 /
 //   0.29 / 0.9 / 3 / 9 / 30 / 90 / 300 / 900 grid times. 30 is inside the flat part: a third
 //   or three times it moves that crest by 1.5 %, a tenth or ten times it by 8 %.
+// - with XPIC(m >= 2) for the free water ([solver] liquid_xpic_order) the water's default is
+//   1 grid time: XPIC takes far less of the resolved motion per damped step, so it can damp
+//   faster. A standing wave on a crossed 0.02 m mesh (4 points per cell) ends with a noise of
+//   44.5 / 28.5 / 16.3 / 10.2 / 6.2 mm/s at 30 / 10 / 3 / 1 / 0.3 gt and loses 1.31 / 0.96 /
+//   0.95 / 1.71 / 4.29 % a period; at 1 gt with 9 points per cell the noise stays flat
+//   (verification/standing_wave/README.md, stop 56). Case B's crests at 0.02 m move by -3.7 /
+//   +1.8 % at a third / three times it (verification/speed_accuracy_case_b/README.md, stop 57).
 inline constexpr double kSolidDampingGridTimes = 3.0;
 inline constexpr double kLiquidDampingGridTimes = 30.0;
+inline constexpr double kLiquidXpicDampingGridTimes = 1.0;
 
 // The cell size h of a mesh: (d! times the median cell volume)^(1/d), the leg of the
 // right-angled triangle or tetrahedron of that volume.
 double characteristic_cell_size(const std::vector<double>& cell_volumes, int dimension);
 
-// Explicit settings win; missing damping times default to the multiples above of sqrt(h / g).
+// Explicit settings win; missing damping times default to the multiples above of sqrt(h / g)
+// (the water's by its transfer: the plain blend or XPIC).
 // Without gravity there is no grid time: phases without a given time keep 0.99 per step.
 TransferDamping resolve_transfer_damping(const SolverSettings& settings, double cell_size,
                                          double gravity);
